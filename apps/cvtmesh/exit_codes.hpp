@@ -1,0 +1,14 @@
+#pragma once
+
+namespace cvtmesh::cli {
+
+// Exit codes of the `cvtmesh` program (documented in README.md).
+enum ExitCode : int {
+  kOk = 0,
+  kInternalError = 1,  // a bug or an unexpected system failure
+  kUsage = 2,          // bad command line or argument value
+  kInputError = 3,     // an input file is missing, unreadable or invalid
+  kOutputError = 4,    // an output could not be written
+};
+
+}  // namespace cvtmesh::cli

@@ -1,0 +1,92 @@
+#include "mesh_report.hpp"
+
+#include <fmt/core.h>
+
+namespace cvtmesh::cli {
+
+nlohmann::ordered_json mesh_json(const TopologyReport& t, const QualityReport& q) {
+  nlohmann::ordered_json j;
+  j["vertices"] = t.vertices;
+  j["faces"] = t.triangles;
+  j["edges"] = t.edges;
+  j["components"] = t.components;
+  j["boundary_loops"] = t.boundary_loops;
+  j["nonmanifold_edges"] = t.nonmanifold_edges;
+  j["nonmanifold_vertices"] = t.nonmanifold_vertices;
+  j["unreferenced_vertices"] = t.unreferenced_vertices;
+  j["orientable"] = t.orientable;
+  j["euler_characteristic"] = t.euler_characteristic;
+  j["genus"] = t.genus ? nlohmann::ordered_json(*t.genus) : nlohmann::ordered_json(nullptr);
+  j["q_min"] = q.q_min;
+  j["q_avg"] = q.q_avg;
+  j["angle_min_deg"] = q.angle_min_deg;
+  j["angle_min_avg_deg"] = q.angle_min_avg_deg;
+  j["angle_max_deg"] = q.angle_max_deg;
+  j["pct_angle_below_30"] = q.pct_angle_below_30;
+  j["edge_length_mean"] = q.edge_length_mean;
+  j["edge_length_std"] = q.edge_length_std;
+  return j;
+}
+
+void add_reference_json(nlohmann::ordered_json& j, const HausdorffReport& h,
+                        const TopologyReport& reference, bool same) {
+  j["hausdorff_max_pct"] = h.max_pct();
+  j["hausdorff_mean_pct"] = h.mean_pct();
+  j["hausdorff_rms_pct"] = h.rms_pct();
+  j["hausdorff_samples"] = h.samples_per_surface;
+  j["same_topology"] = same;
+  j["reference"] = {{"components", reference.components},
+                    {"euler_characteristic", reference.euler_characteristic},
+                    {"boundary_loops", reference.boundary_loops}};
+}
+
+std::string topology_line(const TopologyReport& t) {
+  std::string s = fmt::format("{} vertices, {} triangles, {} component{}, ", t.vertices,
+                              t.triangles, t.components, t.components == 1 ? "" : "s");
+  s += t.is_closed() ? "closed" : fmt::format("{} boundary loop{}", t.boundary_loops,
+                                              t.boundary_loops == 1 ? "" : "s");
+  s += fmt::format(", Euler characteristic {}", t.euler_characteristic);
+  if (t.genus) s += fmt::format(", genus {}", *t.genus);
+  if (!t.is_manifold())
+    s += fmt::format(", non-manifold ({} edges, {} vertices)", t.nonmanifold_edges,
+                     t.nonmanifold_vertices);
+  else if (!t.orientable)
+    s += ", non-orientable";
+  return s;
+}
+
+std::string quality_lines(const QualityReport& q) {
+  return fmt::format(
+      "  quality   Qmin {:.4f}   Qavg {:.4f}\n"
+      "  angles    θmin {:.2f}°   θmin_ave {:.2f}°   θmax {:.2f}°   triangles with θmin < 30°: "
+      "{:.2f}%\n"
+      "  edges     mean length {:.6g}   std {:.6g}\n",
+      q.q_min, q.q_avg, q.angle_min_deg, q.angle_min_avg_deg, q.angle_max_deg,
+      q.pct_angle_below_30, q.edge_length_mean, q.edge_length_std);
+}
+
+std::string hausdorff_lines(const HausdorffReport& h, const TopologyReport& self,
+                            const TopologyReport& reference) {
+  std::string s = fmt::format(
+      "  hausdorff max {:.5f}%   mean {:.5f}%   rms {:.5f}% of the reference's bbox diagonal "
+      "({} samples per surface)\n",
+      h.max_pct(), h.mean_pct(), h.rms_pct(), h.samples_per_surface);
+  if (same_topology(self, reference)) return s + "  topology  same as the reference\n";
+  return s + fmt::format(
+                 "  topology  DIFFERS from the reference: components {} vs {}, Euler "
+                 "characteristic {} vs {}, boundary loops {} vs {}\n",
+                 self.components, reference.components, self.euler_characteristic,
+                 reference.euler_characteristic, self.boundary_loops, reference.boundary_loops);
+}
+
+void warn_about_topology(const std::string& file, const TopologyReport& t) {
+  if (t.nonmanifold_edges > 0)
+    fmt::print(stderr, "{}: warning: {} non-manifold edges (three or more triangles)\n", file,
+               t.nonmanifold_edges);
+  if (t.nonmanifold_vertices > 0)
+    fmt::print(stderr, "{}: warning: {} non-manifold vertices\n", file, t.nonmanifold_vertices);
+  if (t.components > 1) fmt::print(stderr, "{}: note: {} connected components\n", file, t.components);
+  if (!t.orientable) fmt::print(stderr, "{}: note: the surface is not orientable\n", file);
+}
+
+}  // namespace cvtmesh::cli

@@ -1,0 +1,36 @@
+// Two-sided Hausdorff distance between surfaces, Metro-style: dense area-uniform samples of
+// each surface plus its vertices, each sample's distance to the other surface by an AABB tree.
+#pragma once
+
+#include <cstdint>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+struct HausdorffSettings {
+  // Area-uniform samples per surface, in addition to its vertices. 0 = automatic:
+  // max(200'000, 10 × triangles), capped at 2'000'000.
+  std::size_t samples = 0;
+  std::uint64_t seed = 1;  // sampling is deterministic for a given seed, on any thread count
+};
+
+struct OneSidedDistance {
+  double max = 0, mean = 0, rms = 0;  // absolute, in the meshes' units
+};
+
+struct HausdorffReport {
+  OneSidedDistance a_to_b, b_to_a;
+  double max = 0, mean = 0, rms = 0;  // two-sided: the larger of the two one-sided figures
+  double reference_diagonal = 0;      // bounding-box diagonal of `b`, the reference
+  std::size_t samples_per_surface = 0;
+  double max_pct() const { return 100 * max / reference_diagonal; }
+  double mean_pct() const { return 100 * mean / reference_diagonal; }
+  double rms_pct() const { return 100 * rms / reference_diagonal; }
+};
+
+// `b` is the reference (its diagonal normalises the percentages). Both meshes must be non-empty.
+HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
+                                   const HausdorffSettings& settings = {});
+
+}  // namespace cvtmesh

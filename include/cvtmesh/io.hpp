@@ -1,0 +1,38 @@
+// Reading and writing triangle meshes: OBJ, OFF, PLY (ASCII, binary LE/BE), STL (ASCII, binary).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+enum class MeshFormat { obj, off, ply, stl };
+
+// The format named by a path's extension (case-insensitive), or nullopt.
+std::optional<MeshFormat> format_from_extension(const std::filesystem::path& path);
+
+struct ReadReport {
+  std::size_t polygons_in_file = 0;  // faces as stored, before polygons are triangulated
+  std::size_t polygons_split = 0;    // faces with more than 3 corners, fan-triangulated
+};
+
+// Reads and validates a mesh. Throws InputError ("PATH: problem") for a missing or unreadable
+// file, an unknown extension, an empty mesh, a non-finite coordinate, an out-of-range index, a
+// face with fewer than 3 corners, or malformed/truncated data. Vertices are kept as stored
+// (unreferenced and duplicate ones included); use repair_mesh() to clean them.
+TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report = nullptr);
+
+// Writes OBJ/OFF (ASCII, round-trip precision), PLY (binary little-endian) or STL (binary),
+// chosen by extension. The file appears atomically: written beside the target under a temporary
+// name, then renamed. Throws OutputError on failure, InvalidArgument for an unknown extension.
+void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh);
+
+// Throws InvalidArgument if `output` names the same file as `input` (cvtmesh never writes over
+// its input).
+void ensure_distinct_output(const std::filesystem::path& input,
+                            const std::filesystem::path& output);
+
+}  // namespace cvtmesh

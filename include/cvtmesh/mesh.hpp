@@ -1,0 +1,37 @@
+// The triangle mesh every cvtmesh module works on: an indexed triangle soup.
+// No connectivity is stored; modules that need it (topology, features) derive it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "cvtmesh/vec3.hpp"
+
+namespace cvtmesh {
+
+using Index = std::uint32_t;
+using Triangle = std::array<Index, 3>;
+
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Triangle> triangles;
+
+  std::array<Vec3, 3> corners(std::size_t t) const {
+    const Triangle& f = triangles[t];
+    return {vertices[f[0]], vertices[f[1]], vertices[f[2]]};
+  }
+};
+
+struct BoundingBox {
+  Vec3 min, max;
+  double diagonal() const { return distance(min, max); }
+};
+
+// Bounding box of the vertices used by at least one triangle.
+BoundingBox bounding_box(const TriangleMesh& mesh);
+
+double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c);
+double surface_area(const TriangleMesh& mesh);
+
+}  // namespace cvtmesh

@@ -1,0 +1,34 @@
+// Repairs that keep the shape of a mesh, each counted so the caller can report it.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+struct RepairReport {
+  std::size_t duplicate_vertices_merged = 0;  // vertices with exactly equal coordinates
+  std::size_t degenerate_triangles_removed = 0;  // zero area (repeated or collinear corners)
+  std::size_t duplicate_triangles_removed = 0;   // same three vertices, any order or orientation
+  std::size_t unreferenced_vertices_removed = 0;
+
+  bool changed() const {
+    return duplicate_vertices_merged + degenerate_triangles_removed +
+               duplicate_triangles_removed + unreferenced_vertices_removed >
+           0;
+  }
+  // "merged 3 duplicate vertices, removed 2 zero-area triangles", or "" if nothing changed.
+  std::string summary() const;
+};
+
+// Applies, in this order: merge exactly-duplicate vertices, drop zero-area triangles (exact
+// collinearity test), drop duplicate triangles (first one kept), drop unreferenced vertices.
+// Deterministic; the kept elements keep their relative order.
+RepairReport repair_mesh(TriangleMesh& mesh);
+
+// Counts what repair_mesh() would change, without changing the mesh.
+RepairReport diagnose_repairs(const TriangleMesh& mesh);
+
+}  // namespace cvtmesh

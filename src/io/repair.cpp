@@ -1,0 +1,125 @@
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+#include <tuple>
+
+#include "cvtmesh/repair.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+Kernel::Point_3 point(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+// Keeps the vertices with keep[v], in order, and renumbers the triangles.
+void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
+  std::vector<Index> new_index(mesh.vertices.size());
+  std::size_t n = 0;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!keep[v]) continue;
+    new_index[v] = static_cast<Index>(n);
+    mesh.vertices[n++] = mesh.vertices[v];
+  }
+  mesh.vertices.resize(n);
+  for (Triangle& t : mesh.triangles)
+    for (Index& v : t) v = new_index[v];
+}
+
+std::size_t merge_duplicate_vertices(TriangleMesh& mesh) {
+  const auto& p = mesh.vertices;
+  std::vector<Index> order(p.size());
+  std::iota(order.begin(), order.end(), Index{0});
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return std::tie(p[a].x, p[a].y, p[a].z) < std::tie(p[b].x, p[b].y, p[b].z);
+  });
+  // Each run of equal points maps to its first vertex in file order (stable sort keeps it first).
+  std::vector<Index> representative(p.size());
+  std::vector<bool> keep(p.size(), true);
+  std::size_t merged = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const bool same_as_previous = i > 0 && p[order[i]] == p[order[i - 1]];
+    representative[order[i]] = same_as_previous ? representative[order[i - 1]] : order[i];
+    if (same_as_previous) keep[order[i]] = false, ++merged;
+  }
+  if (merged == 0) return 0;
+  for (Triangle& t : mesh.triangles)
+    for (Index& v : t) v = representative[v];
+  compact_vertices(mesh, keep);
+  return merged;
+}
+
+std::size_t remove_degenerate_triangles(TriangleMesh& mesh) {
+  const std::size_t before = mesh.triangles.size();
+  std::erase_if(mesh.triangles, [&](const Triangle& t) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
+    return CGAL::collinear(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]),
+                           point(mesh.vertices[t[2]]));
+  });
+  return before - mesh.triangles.size();
+}
+
+std::size_t remove_duplicate_triangles(TriangleMesh& mesh) {
+  auto key = [](Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::vector<std::size_t> order(mesh.triangles.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return key(mesh.triangles[a]) < key(mesh.triangles[b]);
+  });
+  std::vector<bool> keep(order.size(), true);
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (key(mesh.triangles[order[i]]) == key(mesh.triangles[order[i - 1]])) keep[order[i]] = false;
+  std::size_t n = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (keep[t]) mesh.triangles[n++] = mesh.triangles[t];
+  const std::size_t removed = mesh.triangles.size() - n;
+  mesh.triangles.resize(n);
+  return removed;
+}
+
+std::size_t remove_unreferenced_vertices(TriangleMesh& mesh) {
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const Triangle& t : mesh.triangles)
+    for (Index v : t) used[v] = true;
+  const std::size_t unused = std::count(used.begin(), used.end(), false);
+  if (unused > 0) compact_vertices(mesh, used);
+  return unused;
+}
+
+}  // namespace
+
+std::string RepairReport::summary() const {
+  std::string s;
+  auto add = [&](std::size_t n, const char* what) {
+    if (n == 0) return;
+    if (!s.empty()) s += ", ";
+    s += std::to_string(n) + " " + what;
+  };
+  add(duplicate_vertices_merged, "duplicate vertices merged");
+  add(degenerate_triangles_removed, "zero-area triangles removed");
+  add(duplicate_triangles_removed, "duplicate triangles removed");
+  add(unreferenced_vertices_removed, "unreferenced vertices removed");
+  return s;
+}
+
+RepairReport repair_mesh(TriangleMesh& mesh) {
+  RepairReport r;
+  r.duplicate_vertices_merged = merge_duplicate_vertices(mesh);
+  r.degenerate_triangles_removed = remove_degenerate_triangles(mesh);
+  r.duplicate_triangles_removed = remove_duplicate_triangles(mesh);
+  r.unreferenced_vertices_removed = remove_unreferenced_vertices(mesh);
+  return r;
+}
+
+RepairReport diagnose_repairs(const TriangleMesh& mesh) {
+  TriangleMesh copy = mesh;
+  return repair_mesh(copy);
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,77 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "cvtmesh/quality.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+// Angle between u and v in degrees; atan2 stays accurate for angles near 0° and 180°.
+double angle_between(const Vec3& u, const Vec3& v) {
+  return kDegrees * std::atan2(norm(cross(u, v)), dot(u, v));
+}
+
+}  // namespace
+
+TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double la = distance(b, c), lb = distance(c, a), lc = distance(a, b);
+  if (la == 0 || lb == 0 || lc == 0) return {0, 0, 180};
+  const double area = triangle_area(a, b, c);
+  const double half_perimeter = 0.5 * (la + lb + lc);
+  const double longest = std::max({la, lb, lc});
+  // Paper §5: Q_t = 6/√3 · A/(p·h).
+  const double q = 6.0 / std::sqrt(3.0) * area / (half_perimeter * longest);
+  const double alpha = angle_between(b - a, c - a);
+  const double beta = angle_between(a - b, c - b);
+  const double gamma = angle_between(a - c, b - c);
+  return {q, std::min({alpha, beta, gamma}), std::max({alpha, beta, gamma})};
+}
+
+QualityReport measure_quality(const TriangleMesh& mesh) {
+  QualityReport r;
+  r.triangles = mesh.triangles.size();
+  if (r.triangles == 0) return r;
+  r.q_min = r.angle_min_deg = std::numeric_limits<double>::infinity();
+  double q_sum = 0, min_angle_sum = 0;
+  std::size_t below_30 = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const TriangleShape s = triangle_shape(a, b, c);
+    r.q_min = std::min(r.q_min, s.quality);
+    r.angle_min_deg = std::min(r.angle_min_deg, s.min_angle);
+    r.angle_max_deg = std::max(r.angle_max_deg, s.max_angle);
+    q_sum += s.quality;
+    min_angle_sum += s.min_angle;
+    if (s.min_angle < 30) ++below_30;
+  }
+  const double n = static_cast<double>(r.triangles);
+  r.q_avg = q_sum / n;
+  r.angle_min_avg_deg = min_angle_sum / n;
+  r.pct_angle_below_30 = 100.0 * static_cast<double>(below_30) / n;
+
+  // Distinct undirected edges, each counted once however many triangles share it.
+  std::vector<std::pair<Index, Index>> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const Triangle& f : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      edges.push_back(std::minmax(f[k], f[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<double> lengths;
+  lengths.reserve(edges.size());
+  double sum = 0;
+  for (const auto& [u, v] : edges) sum += lengths.emplace_back(distance(mesh.vertices[u], mesh.vertices[v]));
+  r.edge_length_mean = sum / static_cast<double>(lengths.size());
+  // Population standard deviation, two-pass to avoid cancellation on near-uniform meshes.
+  double sum_sq = 0;
+  for (double l : lengths) sum_sq += (l - r.edge_length_mean) * (l - r.edge_length_mean);
+  r.edge_length_std = std::sqrt(sum_sq / static_cast<double>(lengths.size()));
+  return r;
+}
+
+}  // namespace cvtmesh

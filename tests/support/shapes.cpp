@@ -1,0 +1,142 @@
+#include "support/shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "cvtmesh/repair.hpp"
+
+namespace cvtmesh::testing {
+
+namespace {
+
+Vec3 normalized(const Vec3& v) { return (1.0 / norm(v)) * v; }
+
+}  // namespace
+
+TriangleMesh icosphere(int levels, double radius) {
+  const double p = (1 + std::sqrt(5.0)) / 2;
+  TriangleMesh m;
+  m.vertices = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
+                {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
+  for (Vec3& v : m.vertices) v = normalized(v);
+  m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<Index, Index>, Index> midpoint;
+    auto mid = [&](Index a, Index b) {
+      auto [it, fresh] = midpoint.try_emplace({std::min(a, b), std::max(a, b)}, 0);
+      if (fresh) {
+        it->second = static_cast<Index>(m.vertices.size());
+        m.vertices.push_back(normalized(0.5 * (m.vertices[a] + m.vertices[b])));
+      }
+      return it->second;
+    };
+    std::vector<Triangle> finer;
+    for (const Triangle& t : m.triangles) {
+      const Index ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+      for (Triangle child : {Triangle{t[0], ab, ca}, Triangle{t[1], bc, ab}, Triangle{t[2], ca, bc},
+                             Triangle{ab, bc, ca}})
+        finer.push_back(child);
+    }
+    m.triangles = std::move(finer);
+  }
+  for (Vec3& v : m.vertices) v = radius * v;
+  return m;
+}
+
+TriangleMesh torus(double R, double r, int nu, int nv) {
+  TriangleMesh m;
+  const double tau = 2 * std::numbers::pi;
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      const double u = tau * i / nu, v = tau * j / nv;
+      m.vertices.push_back(
+          {(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  return m;
+}
+
+TriangleMesh cube(int n) {
+  TriangleMesh m;
+  // Each face: a fixed axis at ±1 and two free axes on a grid. Shared edges produce bit-equal
+  // coordinates, merged below.
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double side : {-1.0, 1.0}) {
+      const Index base = static_cast<Index>(m.vertices.size());
+      for (int i = 0; i <= n; ++i) {
+        for (int j = 0; j <= n; ++j) {
+          double c[3];
+          c[axis] = side;
+          c[(axis + 1) % 3] = -1 + 2.0 * i / n;
+          c[(axis + 2) % 3] = -1 + 2.0 * j / n;
+          m.vertices.push_back({c[0], c[1], c[2]});
+        }
+      }
+      auto id = [&](int i, int j) { return base + static_cast<Index>(i * (n + 1) + j); };
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          // (axis+1, axis+2, axis) is right-handed: counter-clockwise seen from +axis.
+          if (side > 0) {
+            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+          } else {
+            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+            m.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+          }
+        }
+      }
+    }
+  }
+  repair_mesh(m);
+  return m;
+}
+
+TriangleMesh disk(int rings, int sectors) {
+  TriangleMesh m;
+  m.vertices.push_back({0, 0, 0});
+  const double tau = 2 * std::numbers::pi;
+  for (int k = 1; k <= rings; ++k) {
+    for (int s = 0; s < sectors; ++s) {
+      const double radius = static_cast<double>(k) / rings, a = tau * s / sectors;
+      m.vertices.push_back({radius * std::cos(a), radius * std::sin(a), 0});
+    }
+  }
+  auto id = [&](int k, int s) {
+    return k == 0 ? Index{0} : static_cast<Index>(1 + (k - 1) * sectors + (s % sectors));
+  };
+  for (int s = 0; s < sectors; ++s) m.triangles.push_back({0, id(1, s), id(1, s + 1)});
+  for (int k = 1; k < rings; ++k) {
+    for (int s = 0; s < sectors; ++s) {
+      m.triangles.push_back({id(k, s), id(k + 1, s), id(k + 1, s + 1)});
+      m.triangles.push_back({id(k, s), id(k + 1, s + 1), id(k, s + 1)});
+    }
+  }
+  return m;
+}
+
+TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b) {
+  TriangleMesh m = a;
+  const Index shift = static_cast<Index>(a.vertices.size());
+  m.vertices.insert(m.vertices.end(), b.vertices.begin(), b.vertices.end());
+  for (Triangle t : b.triangles) m.triangles.push_back({t[0] + shift, t[1] + shift, t[2] + shift});
+  return m;
+}
+
+TriangleMesh transformed(TriangleMesh mesh, double scale, const Vec3& offset) {
+  for (Vec3& v : mesh.vertices) v = scale * v + offset;
+  return mesh;
+}
+
+}  // namespace cvtmesh::testing

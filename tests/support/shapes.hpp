@@ -1,0 +1,28 @@
+// Meshes generated in code, so core tests and benchmarks run without any data files.
+#pragma once
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh::testing {
+
+// Unit icosahedron subdivided `levels` times, vertices on the sphere of `radius`:
+// 20·4^levels triangles, closed, genus 0.
+TriangleMesh icosphere(int levels, double radius = 1.0);
+
+// Torus around z with major radius R and minor radius r: 2·nu·nv triangles, genus 1.
+TriangleMesh torus(double R, double r, int nu, int nv);
+
+// Surface of the cube [-1,1]^3, each face an n×n grid: 12·n² triangles, closed, genus 0.
+TriangleMesh cube(int n);
+
+// Flat unit disk in z = 0: a centre vertex and `rings` rings of `sectors` vertices; open,
+// one boundary loop, Euler characteristic 1.
+TriangleMesh disk(int rings, int sectors);
+
+// Both meshes in one, `b` after `a` (indices of `b` shifted).
+TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b);
+
+// `mesh` with every vertex moved by `offset` and scaled by `scale` about the origin first.
+TriangleMesh transformed(TriangleMesh mesh, double scale, const Vec3& offset = {});
+
+}  // namespace cvtmesh::testing
