@@ -1,2 +1,70 @@
+// Hot paths of the quality report: topology analysis, per-triangle metrics, Hausdorff distance
+// and mesh reading, on generated meshes (icosphere level 6 = 81,920 triangles, level 7 = 327,680,
+// about igea's size). Compare a figure against `BM_SurfaceArea` of the same size, the cheapest
+// possible pass over the triangles, run in the same process.
 #include <benchmark/benchmark.h>
-BENCHMARK_MAIN();
+
+#include <map>
+
+#include "cvtmesh/hausdorff.hpp"
+#include "cvtmesh/io.hpp"
+#include "cvtmesh/quality.hpp"
+#include "cvtmesh/topology.hpp"
+#include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
+
+namespace {
+
+using namespace cvtmesh;
+
+const TriangleMesh& sphere(int level) {
+  static std::map<int, TriangleMesh> cache;
+  auto it = cache.find(level);
+  if (it == cache.end()) it = cache.emplace(level, testing::icosphere(level)).first;
+  return it->second;
+}
+
+void BM_SurfaceArea(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(surface_area(m));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_SurfaceArea)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+void BM_AnalyzeTopology(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(analyze_topology(m));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_AnalyzeTopology)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+void BM_MeasureQuality(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(measure_quality(m));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_MeasureQuality)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+// Sphere level 6 against a 1% larger level-5 sphere; range(0) = samples per surface.
+void BM_Hausdorff(benchmark::State& state) {
+  const TriangleMesh& a = sphere(6);
+  const TriangleMesh b = testing::transformed(sphere(5), 1.01);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        hausdorff_distance(a, b, {.samples = static_cast<std::size_t>(state.range(0))}));
+  state.SetItemsProcessed(state.iterations() * 2 * state.range(0));
+}
+BENCHMARK(BM_Hausdorff)->Arg(200'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+// Reading a binary PLY and an ASCII OFF of the level-7 sphere (327,680 triangles).
+void BM_ReadMesh(benchmark::State& state, const char* extension) {
+  testing::TempDir dir;
+  const auto path = dir / (std::string("sphere.") + extension);
+  write_mesh(path, sphere(7));
+  for (auto _ : state) benchmark::DoNotOptimize(read_mesh(path));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(sphere(7).triangles.size()));
+}
+BENCHMARK_CAPTURE(BM_ReadMesh, ply, "ply")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ReadMesh, off, "off")->Unit(benchmark::kMillisecond);
+
+}  // namespace

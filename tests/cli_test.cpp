@@ -1,1 +1,225 @@
+// End-to-end tests of the `cvtmesh` program: exit codes, one-line errors, JSON reports.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "cvtmesh/io.hpp"
+#include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun run_cli(const TempDir& dir, const std::string& args) {
+  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command = std::string(CVTMESH_CLI) + " " + args + " >" + out.string() +
+                              " 2>" + err.string() + " </dev/null";
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+}
+
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+TEST(Cli, VersionAndHelp) {
+  TempDir dir;
+  CliRun r = run_cli(dir, "--version");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("cvtmesh 0."), std::string::npos) << r.out;
+  r = run_cli(dir, "--help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("quality"), std::string::npos);
+  EXPECT_NE(r.out.find("repair"), std::string::npos);
+  r = run_cli(dir, "quality --help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--ref"), std::string::npos);
+  EXPECT_NE(run_cli(dir, "repair --help").out.find("OUT"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  TempDir dir;
+  EXPECT_EQ(run_cli(dir, "").code, 2);
+  EXPECT_EQ(run_cli(dir, "frobnicate").code, 2);
+  EXPECT_EQ(run_cli(dir, "quality").code, 2);
+  EXPECT_EQ(run_cli(dir, "quality x.off --threads -1").code, 2);
+}
+
+const char* kRequiredKeys[] = {"vertices", "faces", "components", "boundary_loops",
+                               "nonmanifold_edges", "euler_characteristic", "q_min", "q_avg",
+                               "angle_min_deg", "angle_min_avg_deg", "angle_max_deg",
+                               "pct_angle_below_30", "edge_length_mean", "edge_length_std"};
+
+TEST(Cli, QualityJsonHasEveryKeyWithTheMeshValues) {
+  TempDir dir;
+  write_mesh(dir / "torus.off", torus(2, 0.5, 24, 12));
+  const CliRun r = run_cli(dir, "quality --json " + quoted(dir / "torus.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : kRequiredKeys) EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["vertices"], 288);
+  EXPECT_EQ(j["faces"], 576);
+  EXPECT_EQ(j["euler_characteristic"], 0);
+  EXPECT_EQ(j["genus"], 1);
+  EXPECT_FALSE(j.contains("hausdorff_max_pct"));
+}
+
+TEST(Cli, QualityWithReferenceAddsHausdorffAndTopology) {
+  TempDir dir;
+  write_mesh(dir / "unit.ply", icosphere(3));
+  write_mesh(dir / "big.obj", transformed(icosphere(3), 1.01));
+  write_mesh(dir / "torus.stl", torus(1, 0.3, 24, 12));
+  CliRun r = run_cli(dir, "quality --json --samples 20000 " + quoted(dir / "big.obj") + " --ref " +
+                           quoted(dir / "unit.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct"})
+    EXPECT_GT(j[key].get<double>(), 0) << key;
+  EXPECT_EQ(j["same_topology"], true);
+  r = run_cli(dir, "quality --json --samples 20000 " + quoted(dir / "torus.stl") + " --ref " +
+                       quoted(dir / "unit.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["same_topology"], false);
+  r = run_cli(dir, "quality --samples 20000 " + quoted(dir / "torus.stl") + " --ref " +
+                       quoted(dir / "unit.ply"));
+  EXPECT_NE(r.out.find("DIFFERS"), std::string::npos) << r.out;
+}
+
+TEST(Cli, NonManifoldInputIsReportedNotFatal) {
+  TempDir dir;
+  write_file(dir / "fin.obj",
+             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n");
+  const CliRun r = run_cli(dir, "quality --json " + quoted(dir / "fin.obj"));
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["nonmanifold_edges"], 1);
+  EXPECT_NE(r.err.find("non-manifold"), std::string::npos) << r.err;
+}
+
+struct BadInput {
+  std::string name, content, expected;
+};
+
+void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.name; }
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, OneLineErrorNamingFileAndProblem) {
+  TempDir dir;
+  const BadInput& bad = GetParam();
+  const auto path = dir / bad.name;
+  if (bad.content == "<directory>")
+    std::filesystem::create_directory(path);
+  else if (bad.content == "<truncated ply>") {
+    write_mesh(path, icosphere(3));
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) - 100);
+  } else if (bad.content != "<missing>")
+    write_file(path, bad.content);
+  const CliRun r = run_cli(dir, "quality " + quoted(path));
+  EXPECT_EQ(r.code, 3);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find(path.string() + ": "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(bad.expected), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+std::string binary_stl_header(std::uint32_t count) {
+  std::string s(80, ' ');
+  for (int k = 0; k < 4; ++k) s += static_cast<char>((count >> (8 * k)) & 0xff);
+  return s;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryCase, CliBadInput,
+    ::testing::Values(
+        BadInput{"missing.off", "<missing>", "no such file"},
+        BadInput{"folder.off", "<directory>", "is a directory"},
+        BadInput{"mesh.xyz", "1 2 3\n", "unknown extension"},
+        BadInput{"empty.obj", "", "file is empty"},
+        BadInput{"nofaces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "empty mesh"},
+        BadInput{"nofaces.off", "OFF\n0 0 0\n", "empty mesh"},
+        BadInput{"nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n", "non-finite"},
+        BadInput{"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n", "non-finite"},
+        BadInput{"nan.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                 "end_header\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n",
+                 "non-finite"},
+        BadInput{"range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "out of range"},
+        BadInput{"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "out of range"},
+        BadInput{"negative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -5\n", "out of range"},
+        BadInput{"range.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+                 "out of range"},
+        BadInput{"edge.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "2 corners"},
+        BadInput{"edge.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "2 corners"},
+        BadInput{"short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", "truncated OFF"},
+        BadInput{"short.stl", binary_stl_header(2) + std::string(50, '\0'), "truncated binary STL"},
+        BadInput{"short.ply", "<truncated ply>", "truncated PLY"}),
+    [](const auto& info) {
+      std::string name = info.param.name;
+      std::replace(name.begin(), name.end(), '.', '_');
+      return name;
+    });
+
+TEST(Cli, RepairWritesCleanMeshAndReportsWhatItDid) {
+  TempDir dir;
+  write_file(dir / "in.obj",
+             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nv 5 5 5\nf 1 2 3\nf 1 2 3\nf 1 4 2\n");
+  const CliRun r = run_cli(dir, "repair --json " + quoted(dir / "in.obj") + " " + quoted(dir / "out.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["duplicate_vertices_merged"], 1);
+  EXPECT_EQ(j["duplicate_triangles_removed"], 1);
+  EXPECT_EQ(j["degenerate_triangles_removed"], 1);
+  EXPECT_EQ(j["unreferenced_vertices_removed"], 1);
+  EXPECT_NE(r.err.find("duplicate vertices merged"), std::string::npos) << r.err;
+  const TriangleMesh out = read_mesh(dir / "out.ply");
+  EXPECT_EQ(out.triangles.size(), 1u);
+  EXPECT_EQ(out.vertices.size(), 3u);
+}
+
+TEST(Cli, RepairNeverWritesOverItsInput) {
+  TempDir dir;
+  write_mesh(dir / "in.off", icosphere(1));
+  const std::string before = read_file(dir / "in.off");
+  for (const std::string out : {"in.off", "./in.off"}) {
+    const CliRun r = run_cli(dir, "repair " + quoted(dir / "in.off") + " " + quoted(dir / out));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("refusing to write over the input"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(read_file(dir / "in.off"), before);
+}
+
+TEST(Cli, UnwritableOutputExitsWithFourAndLeavesNothing) {
+  TempDir dir;
+  write_mesh(dir / "in.off", icosphere(1));
+  const CliRun r = run_cli(dir, "repair " + quoted(dir / "in.off") + " " + quoted(dir / "no" / "out.off"));
+  EXPECT_EQ(r.code, 4);
+  EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
+}
+
+TEST(Cli, ThreadCountDoesNotChangeTheReport) {
+  TempDir dir;
+  write_mesh(dir / "a.off", icosphere(3));
+  write_mesh(dir / "b.off", transformed(torus(1, 0.5, 30, 15), 1.0, {0.2, 0, 0}));
+  const std::string args =
+      "quality --json --samples 30000 " + quoted(dir / "a.off") + " --ref " + quoted(dir / "b.off");
+  const CliRun one = run_cli(dir, args + " --threads 1"), all = run_cli(dir, args);
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_EQ(one.out, all.out);
+}
+
+}  // namespace
+}  // namespace cvtmesh

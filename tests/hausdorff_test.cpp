@@ -1,1 +1,67 @@
+// Hausdorff distance on surfaces whose distance is known in closed form.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "cvtmesh/hausdorff.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+TEST(Hausdorff, IdenticalSurfacesAreAtDistanceZero) {
+  const TriangleMesh s = icosphere(3);
+  const HausdorffReport h = hausdorff_distance(s, s, {.samples = 20'000});
+  EXPECT_LT(h.max, 1e-12);
+  EXPECT_LT(h.mean, 1e-12);
+}
+
+TEST(Hausdorff, UnitSphereAgainstSphereScaledByOnePercent) {
+  // Vertices of the scaled sphere sit exactly 0.01 from the unit one; every other point lies
+  // between 0.01·d and 0.01, d the distance of a face plane to the centre (d > 0.99 here).
+  const TriangleMesh unit = icosphere(4), scaled = transformed(unit, 1.01);
+  const HausdorffReport h = hausdorff_distance(scaled, unit, {.samples = 50'000});
+  EXPECT_NEAR(h.max, 0.01, 1e-9);
+  EXPECT_GT(h.mean, 0.0099);
+  EXPECT_LE(h.mean, 0.01 + 1e-12);
+  EXPECT_GE(h.rms, h.mean);
+  EXPECT_NEAR(h.max_pct(), 100 * 0.01 / bounding_box(unit).diagonal(), 1e-7);
+  EXPECT_EQ(h.samples_per_surface, 50'000u);
+}
+
+TEST(Hausdorff, DisplacedBumpIsSeenFromTheReferenceSide) {
+  // A flat disk against the same disk with its centre vertex lifted by 0.3: the one-sided
+  // distance from the bumped disk reaches 0.3 at the apex.
+  const TriangleMesh flat = disk(4, 12);
+  TriangleMesh bumped = flat;
+  bumped.vertices[0].z = 0.3;
+  const HausdorffReport h = hausdorff_distance(bumped, flat, {.samples = 20'000});
+  EXPECT_NEAR(h.a_to_b.max, 0.3, 1e-12);
+  EXPECT_LT(h.b_to_a.max, 0.3);
+  EXPECT_NEAR(h.max, 0.3, 1e-12);
+}
+
+TEST(Hausdorff, ResultDoesNotDependOnThreadCount) {
+  const TriangleMesh a = icosphere(3), b = transformed(torus(1, 0.4, 32, 16), 1.0, {0.1, 0, 0});
+  HausdorffReport one, all;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = hausdorff_distance(a, b, {.samples = 30'000});
+  }
+  all = hausdorff_distance(a, b, {.samples = 30'000});
+  EXPECT_EQ(one.max, all.max);
+  EXPECT_EQ(one.mean, all.mean);
+  EXPECT_EQ(one.rms, all.rms);
+}
+
+TEST(Hausdorff, DifferentSeedsGiveCloseEstimates) {
+  const TriangleMesh a = icosphere(3), b = transformed(icosphere(2), 1.05);
+  const HausdorffReport x = hausdorff_distance(a, b, {.samples = 40'000, .seed = 1});
+  const HausdorffReport y = hausdorff_distance(a, b, {.samples = 40'000, .seed = 2});
+  EXPECT_NE(x.mean, y.mean);
+  EXPECT_NEAR(x.mean, y.mean, 0.01 * x.mean);
+}
+
+}  // namespace
+}  // namespace cvtmesh

@@ -1,1 +1,163 @@
+// Reading and writing every supported format, and the atomic-write guarantees.
 #include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/io.hpp"
+#include "cvtmesh/topology.hpp"
+#include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+class RoundTrip : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RoundTrip, KeepsTrianglesAndCoordinates) {
+  TempDir dir;
+  const TriangleMesh mesh = icosphere(2, 1.2345678901234567);
+  const auto path = dir / ("sphere." + GetParam());
+  write_mesh(path, mesh);
+  const TriangleMesh back = read_mesh(path);
+  ASSERT_EQ(back.triangles.size(), mesh.triangles.size());
+  ASSERT_EQ(back.vertices.size(), mesh.vertices.size());
+  const bool single_precision = GetParam() == "stl";  // binary STL stores float32
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto expected = mesh.corners(t), actual = back.corners(t);
+    for (int k = 0; k < 3; ++k) {
+      if (single_precision)
+        EXPECT_NEAR(distance(expected[k], actual[k]), 0.0, 1e-6);
+      else
+        EXPECT_EQ(expected[k], actual[k]);
+    }
+  }
+  EXPECT_TRUE(same_topology(analyze_topology(back), analyze_topology(mesh)));
+}
+
+INSTANTIATE_TEST_SUITE_P(AllFormats, RoundTrip, ::testing::Values("obj", "off", "ply", "stl"));
+
+TEST(ReadMesh, ExtensionIsCaseInsensitive) {
+  TempDir dir;
+  write_mesh(dir / "a.OFF", icosphere(0));
+  EXPECT_EQ(read_mesh(dir / "a.OFF").triangles.size(), 20u);
+}
+
+TEST(ReadMesh, ObjPolygonsWithTextureAndNormalIndicesAreTriangulated) {
+  TempDir dir;
+  write_file(dir / "quad.obj",
+             "# a quad and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+             "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf 2//1 5//1 3//1\n");
+  ReadReport report;
+  const TriangleMesh m = read_mesh(dir / "quad.obj", &report);
+  EXPECT_EQ(report.polygons_in_file, 2u);
+  EXPECT_EQ(report.polygons_split, 1u);
+  ASSERT_EQ(m.triangles.size(), 3u);
+  EXPECT_EQ(m.triangles[0], (Triangle{0, 1, 2}));
+  EXPECT_EQ(m.triangles[1], (Triangle{0, 2, 3}));
+  EXPECT_EQ(m.triangles[2], (Triangle{1, 4, 2}));
+}
+
+const char* kPlyHeader =
+    "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+
+TEST(ReadMesh, AsciiPly) {
+  TempDir dir;
+  write_file(dir / "a.ply", std::string("ply\nformat ascii 1.0\n") + kPlyHeader +
+                                "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  const TriangleMesh m = read_mesh(dir / "a.ply");
+  ASSERT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.vertices[2], (Vec3{1, 1, 0}));
+  EXPECT_EQ(m.triangles[1], (Triangle{0, 2, 3}));
+}
+
+std::string big_endian_float(float f) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, 4);
+  return {static_cast<char>(bits >> 24), static_cast<char>(bits >> 16),
+          static_cast<char>(bits >> 8), static_cast<char>(bits)};
+}
+std::string big_endian_int(std::int32_t i) {
+  const auto u = static_cast<std::uint32_t>(i);
+  return {static_cast<char>(u >> 24), static_cast<char>(u >> 16), static_cast<char>(u >> 8),
+          static_cast<char>(u)};
+}
+
+TEST(ReadMesh, BinaryBigEndianPly) {
+  TempDir dir;
+  std::string body;
+  for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.5f, 0.f, 0.f, 1.f, 0.25f})
+    body += big_endian_float(c);
+  for (int f = 0; f < 2; ++f) {
+    body += '\3';
+    for (int v : {0, 1 + f, 2 + f}) body += big_endian_int(v);
+  }
+  write_file(dir / "be.ply", std::string("ply\nformat binary_big_endian 1.0\n") + kPlyHeader + body);
+  const TriangleMesh m = read_mesh(dir / "be.ply");
+  ASSERT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.vertices[2], (Vec3{1, 1.5, 0}));
+  EXPECT_EQ(m.vertices[3], (Vec3{0, 1, 0.25}));
+  EXPECT_EQ(m.triangles[1], (Triangle{0, 2, 3}));
+}
+
+TEST(ReadMesh, AsciiStlSharesCornersBetweenFacets) {
+  TempDir dir;
+  write_file(dir / "a.stl",
+             "solid square\n"
+             "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\n"
+             "endfacet\n"
+             "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\n"
+             "endfacet\nendsolid square\n");
+  const TriangleMesh m = read_mesh(dir / "a.stl");
+  ASSERT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(analyze_topology(m).boundary_loops, 1u);
+}
+
+TEST(ReadMesh, ErrorNamesTheFileAndTheProblem) {
+  TempDir dir;
+  write_file(dir / "bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  try {
+    read_mesh(dir / "bad.off");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find((dir / "bad.off").string()), std::string::npos) << what;
+    EXPECT_NE(what.find("out of range"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+TEST(WriteMesh, LeavesNoTemporaryFileBehind) {
+  TempDir dir;
+  write_mesh(dir / "a.ply", icosphere(1));
+  write_mesh(dir / "a.ply", icosphere(2));  // replaces the first one whole
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 1u);
+  EXPECT_EQ(read_mesh(dir / "a.ply").triangles.size(), icosphere(2).triangles.size());
+}
+
+TEST(WriteMesh, FailureThrowsAndCreatesNothing) {
+  TempDir dir;
+  EXPECT_THROW(write_mesh(dir / "missing-folder" / "a.obj", icosphere(1)), OutputError);
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  EXPECT_THROW(write_mesh(dir / "a.xyz", icosphere(1)), InvalidArgument);
+}
+
+TEST(EnsureDistinctOutput, RefusesTheInputUnderAnyName) {
+  TempDir dir;
+  write_mesh(dir / "in.obj", icosphere(0));
+  std::filesystem::create_symlink(dir / "in.obj", dir / "link.obj");
+  EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir / "in.obj"), InvalidArgument);
+  EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir.path() / "." / "in.obj"), InvalidArgument);
+  EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir / "link.obj"), InvalidArgument);
+  EXPECT_NO_THROW(ensure_distinct_output(dir / "in.obj", dir / "out.obj"));
+}
+
+}  // namespace
+}  // namespace cvtmesh

@@ -1,1 +1,98 @@
+// Triangle quality and angle figures, checked on triangles whose values are known by hand.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cvtmesh/quality.hpp"
+
+namespace cvtmesh {
+namespace {
+
+constexpr double kTol = 1e-12;
+const double kDeg = 180 / std::numbers::pi;
+
+TEST(TriangleShape, EquilateralHasQualityOneAndSixtyDegreeAngles) {
+  const TriangleShape s = triangle_shape({0, 0, 0}, {2, 0, 0}, {1, std::sqrt(3.0), 0});
+  EXPECT_NEAR(s.quality, 1.0, kTol);
+  EXPECT_NEAR(s.min_angle, 60.0, 1e-10);
+  EXPECT_NEAR(s.max_angle, 60.0, 1e-10);
+}
+
+TEST(TriangleShape, RightIsoscelesMatchesHandComputedValues) {
+  // A = 1/2, p = (2 + √2)/2, h = √2: Q = 6/√3 · A/(p·h) = √3/(1 + √2).
+  const TriangleShape s = triangle_shape({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  EXPECT_NEAR(s.quality, std::sqrt(3.0) / (1 + std::sqrt(2.0)), kTol);
+  EXPECT_NEAR(s.min_angle, 45.0, 1e-10);
+  EXPECT_NEAR(s.max_angle, 90.0, 1e-10);
+}
+
+TEST(TriangleShape, SliverMatchesHandComputedValues) {
+  // Base 1, apex 0.01 above the base's midpoint.
+  const TriangleShape s = triangle_shape({0, 0, 0}, {1, 0, 0}, {0.5, 0.01, 0});
+  const double side = std::sqrt(0.25 + 0.0001), p = (1 + 2 * side) / 2;
+  EXPECT_NEAR(s.quality, 6 / std::sqrt(3.0) * 0.005 / (p * 1.0), kTol);
+  const double base_angle = std::atan(0.01 / 0.5) * kDeg;
+  EXPECT_NEAR(s.min_angle, base_angle, 1e-10);
+  EXPECT_NEAR(s.max_angle, 180 - 2 * base_angle, 1e-10);
+}
+
+TEST(TriangleShape, QualityIsInvariantUnderScalingAndMotion) {
+  const TriangleShape a = triangle_shape({0, 0, 0}, {1, 0.2, 0}, {0.3, 0.9, 0.1});
+  const TriangleShape b = triangle_shape({5, 5, 5}, {5 + 1e3, 5 + 0.2e3, 5}, {5 + 0.3e3, 5 + 0.9e3, 5 + 0.1e3});
+  EXPECT_NEAR(a.quality, b.quality, 1e-12);
+  EXPECT_NEAR(a.min_angle, b.min_angle, 1e-9);
+}
+
+TEST(TriangleShape, DegenerateTrianglesHaveZeroQuality) {
+  const TriangleShape collinear = triangle_shape({0, 0, 0}, {1, 0, 0}, {2, 0, 0});
+  EXPECT_EQ(collinear.quality, 0.0);
+  EXPECT_NEAR(collinear.min_angle, 0.0, 1e-12);
+  EXPECT_NEAR(collinear.max_angle, 180.0, 1e-12);
+  const TriangleShape repeated = triangle_shape({0, 0, 0}, {0, 0, 0}, {1, 0, 0});
+  EXPECT_EQ(repeated.quality, 0.0);
+  EXPECT_EQ(repeated.min_angle, 0.0);
+  EXPECT_EQ(repeated.max_angle, 180.0);
+}
+
+TEST(MeasureQuality, AggregatesOverTrianglesAndDistinctEdges) {
+  // Triangle 0: equilateral (side 2). Triangle 1: right isosceles (legs 1). Triangle 2: sliver.
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {2, 0, 0}, {1, std::sqrt(3.0), 0},
+                {10, 0, 0}, {11, 0, 0}, {10, 1, 0},
+                {20, 0, 0}, {21, 0, 0}, {20.5, 0.01, 0}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}};
+  const QualityReport q = measure_quality(m);
+  const double q_right = std::sqrt(3.0) / (1 + std::sqrt(2.0));
+  const double side = std::sqrt(0.25 + 0.0001);
+  const double q_sliver = 6 / std::sqrt(3.0) * 0.005 / ((1 + 2 * side) / 2);
+  const double sliver_angle = std::atan(0.01 / 0.5) * kDeg;
+  EXPECT_NEAR(q.q_min, q_sliver, kTol);
+  EXPECT_NEAR(q.q_avg, (1 + q_right + q_sliver) / 3, kTol);
+  EXPECT_NEAR(q.angle_min_deg, sliver_angle, 1e-10);
+  EXPECT_NEAR(q.angle_min_avg_deg, (60 + 45 + sliver_angle) / 3, 1e-10);
+  EXPECT_NEAR(q.angle_max_deg, 180 - 2 * sliver_angle, 1e-10);
+  EXPECT_NEAR(q.pct_angle_below_30, 100.0 / 3, 1e-12);
+  const double lengths[] = {2, 2, 2, 1, 1, std::sqrt(2.0), 1, side, side};
+  double mean = 0, var = 0;
+  for (double l : lengths) mean += l / 9;
+  for (double l : lengths) var += (l - mean) * (l - mean) / 9;
+  EXPECT_NEAR(q.edge_length_mean, mean, kTol);
+  EXPECT_NEAR(q.edge_length_std, std::sqrt(var), kTol);
+}
+
+TEST(MeasureQuality, SharedEdgesCountOnce) {
+  // Unit square as two triangles: four sides of 1 and one diagonal of √2.
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const QualityReport q = measure_quality(m);
+  const double mean = (4 + std::sqrt(2.0)) / 5;
+  EXPECT_NEAR(q.edge_length_mean, mean, kTol);
+  const double var = (4 * (1 - mean) * (1 - mean) + (std::sqrt(2.0) - mean) * (std::sqrt(2.0) - mean)) / 5;
+  EXPECT_NEAR(q.edge_length_std, std::sqrt(var), kTol);
+  EXPECT_EQ(q.pct_angle_below_30, 0.0);
+}
+
+}  // namespace
+}  // namespace cvtmesh

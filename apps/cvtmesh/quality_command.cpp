@@ -61,7 +61,7 @@ void add_quality_command(CLI::App& app, Action& run) {
                   "Reference mesh: adds the two-sided Hausdorff distance and a topology check");
   cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
   cmd->add_option("--samples", options->samples,
-                  "Hausdorff samples per surface (0 = max(200k, 10 x faces), at most 2M)")
+                  "Hausdorff samples per surface (0 = max(200k, 2 x faces), at most 1M)")
       ->check(CLI::NonNegativeNumber);
   add_threads_option(*cmd, options->threads);
   cmd->callback([options, &run] { run = [options] { return run_quality(*options); }; });

@@ -10,7 +10,7 @@ namespace cvtmesh {
 
 struct HausdorffSettings {
   // Area-uniform samples per surface, in addition to its vertices. 0 = automatic:
-  // max(200'000, 10 × triangles), capped at 2'000'000.
+  // max(200'000, 2 × triangles of the larger mesh), capped at 1'000'000.
   std::size_t samples = 0;
   std::uint64_t seed = 1;  // sampling is deterministic for a given seed, on any thread count
 };

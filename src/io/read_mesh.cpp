@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 
@@ -11,7 +12,9 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <string>
 
@@ -55,8 +58,8 @@ void check_binary_stl_size(const std::filesystem::path& path, std::istream& in,
                    std::to_string(size) + " bytes");
 }
 
-bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup) {
-  const auto np = CGAL::parameters::verbose(false);
+bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbose) {
+  const auto np = CGAL::parameters::verbose(verbose);
   switch (format) {
     case MeshFormat::obj:
       return CGAL::IO::read_OBJ(in, soup.points, soup.polygons, np);
@@ -84,8 +87,7 @@ std::string format_name(MeshFormat format) {
   return "?";
 }
 
-// What is wrong with what was read, or "" when it is a valid polygon soup.
-std::string validation_problem(const Soup& soup) {
+std::string non_finite_vertex(const Soup& soup) {
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const Point& p = soup.points[i];
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
@@ -95,24 +97,91 @@ std::string validation_problem(const Soup& soup) {
       return s.str();
     }
   }
+  return "";
+}
+
+std::string out_of_range_index(const Soup& soup) {
   for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
-    const Polygon& poly = soup.polygons[f];
-    if (poly.size() < 3)
-      return "face " + std::to_string(f) + " has " + std::to_string(poly.size()) +
-             " corners (a face needs at least 3)";
-    for (std::size_t v : poly) {
+    for (std::size_t v : soup.polygons[f]) {
       if (v >= soup.points.size()) {
-        // OBJ indices are 1-based; CGAL stores negative (relative) ones wrapped around.
-        const long long shown = static_cast<long long>(v);
-        return "face " + std::to_string(f) + " references vertex " + std::to_string(shown) +
-               ", out of range (the file has " + std::to_string(soup.points.size()) +
-               " vertices)";
+        // Shown as a signed number: CGAL stores a negative (relative) OBJ index wrapped around.
+        return "face " + std::to_string(f) + " references vertex " +
+               std::to_string(static_cast<long long>(v)) + ", out of range (the file has " +
+               std::to_string(soup.points.size()) + " vertices)";
       }
     }
   }
+  return "";
+}
+
+std::string short_face(const Soup& soup) {
+  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    if (soup.polygons[f].size() < 3)
+      return "face " + std::to_string(f) + " has " + std::to_string(soup.polygons[f].size()) +
+             " corners (a face needs at least 3)";
+  }
+  return "";
+}
+
+std::string emptiness(const Soup& soup) {
+  if (soup.points.empty() && soup.polygons.empty()) return "empty mesh: no vertices or faces";
   if (soup.points.empty()) return "empty mesh: no vertices";
   if (soup.polygons.empty()) return "empty mesh: no faces";
   return "";
+}
+
+// CGAL's read_OFF keeps its scanner quiet; drive the scanner the same way, verbosely, so that it
+// names the problem (bad index, premature end, ...). Diagnosis only: the data are discarded.
+void scan_off_verbosely(std::istream& in) {
+  CGAL::File_scanner_OFF scanner(in, true);
+  for (std::size_t i = 0; in && i < scanner.size_of_vertices(); ++i) {
+    double x, y, z, w, nx, ny, nz;
+    unsigned char r, g, b;
+    scanner.scan_vertex(x, y, z, w);
+    if (scanner.has_normals()) scanner.scan_normal(nx, ny, nz);
+    if (scanner.has_vcolors()) scanner.scan_color(r, g, b);
+    if (scanner.has_textures()) scanner.scan_texture(x, y);
+    if (in) scanner.skip_to_next_vertex(i);
+  }
+  for (std::size_t f = 0; in && f < scanner.size_of_facets(); ++f) {
+    std::size_t corners = 0, id = 0;
+    scanner.scan_facet(corners, f);
+    for (std::size_t k = 0; in && k < corners; ++k) scanner.scan_facet_vertex_index(id, k + 1, f);
+  }
+}
+
+// CGAL's readers say why they fail only on std::cerr, in verbose mode. After a quiet read has
+// failed, read again verbosely with the standard streams captured, and keep CGAL's last line.
+// Only failing reads get here, and the mutex keeps two of them from mixing their captures.
+std::string cgal_diagnosis(MeshFormat format, const std::filesystem::path& path) {
+  static std::mutex capture_mutex;
+  const std::lock_guard lock(capture_mutex);
+  std::ostringstream captured;
+  std::streambuf* const err = std::cerr.rdbuf(captured.rdbuf());
+  std::streambuf* const out = std::cout.rdbuf(captured.rdbuf());
+  try {
+    std::ifstream in(path, std::ios::binary);
+    if (format == MeshFormat::off) {
+      scan_off_verbosely(in);
+    } else {
+      Soup ignored;
+      read_with_cgal(format, in, ignored, true);
+    }
+  } catch (const std::exception&) {
+  }
+  std::cerr.rdbuf(err);
+  std::cout.rdbuf(out);
+  std::istringstream lines(captured.str());
+  std::string line, last;
+  while (std::getline(lines, line)) {
+    line.erase(0, line.find_first_not_of(" \t"));
+    if (line.empty() || line.ends_with("::") || line.starts_with("NOTE")) continue;
+    last = line;
+  }
+  if (const auto at = last.find("error: "); at != std::string::npos) last.erase(0, at + 7);
+  if (const auto at = last.find("error:"); at != std::string::npos) last.erase(0, at + 6);
+  last.erase(0, last.find_first_not_of(' '));
+  return last;
 }
 
 // ASCII readers stop at the first token they cannot parse as a number, without saying which.
@@ -174,21 +243,25 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   Soup soup;
   bool parsed = false;
   try {
-    parsed = read_with_cgal(*format, in, soup);
+    parsed = read_with_cgal(*format, in, soup, false);
   } catch (const std::exception& e) {
     fail(path, "malformed " + format_name(*format) + " data (" + e.what() + ")");
   }
-  // A soup read in full can still be invalid; a partial one usually says why parsing stopped.
-  if (std::string problem = validation_problem(soup); !problem.empty()) {
-    if (parsed || problem.starts_with("vertex") || problem.starts_with("face")) fail(path, problem);
-  }
-  if (!parsed) {
-    if (*format != MeshFormat::ply || soup.points.empty()) {
-      if (std::string token = find_non_finite_token(path); !token.empty()) fail(path, token);
-    }
-    if (soup.points.empty() && soup.polygons.empty() && *format != MeshFormat::ply)
-      fail(path, "empty mesh: no vertices or faces found");
-    fail(path, "malformed or truncated " + format_name(*format) + " data");
+  if (parsed) {
+    for (const std::string& problem :
+         {non_finite_vertex(soup), out_of_range_index(soup), short_face(soup), emptiness(soup)})
+      if (!problem.empty()) fail(path, problem);
+  } else {
+    // A reader that stopped early leaves a partial soup (its last face may be half-read), so
+    // only the problems that caused the stop are looked for.
+    if (std::string token = find_non_finite_token(path); !token.empty()) fail(path, token);
+    if (std::string problem = out_of_range_index(soup); !problem.empty()) fail(path, problem);
+    const std::string why = cgal_diagnosis(*format, path);
+    if (std::string problem = emptiness(soup);
+        !problem.empty() && (why.empty() || why.find("empty") != std::string::npos))
+      fail(path, problem);
+    fail(path, "malformed or truncated " + format_name(*format) + " data" +
+                   (why.empty() ? "" : " (" + why + ")"));
   }
   ReadReport local;
   TriangleMesh mesh = triangulate(path, soup, report ? *report : local);

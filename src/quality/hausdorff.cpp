@@ -109,8 +109,8 @@ HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
   HausdorffReport r;
   r.samples_per_surface = settings.samples;
   if (r.samples_per_surface == 0) {
-    const std::size_t dense = 10 * std::max(a.triangles.size(), b.triangles.size());
-    r.samples_per_surface = std::clamp<std::size_t>(dense, 200'000, 2'000'000);
+    const std::size_t dense = 2 * std::max(a.triangles.size(), b.triangles.size());
+    r.samples_per_surface = std::clamp<std::size_t>(dense, 200'000, 1'000'000);
   }
   r.reference_diagonal = bounding_box(b).diagonal();
   const SurfaceDistance to_a(a), to_b(b);
