@@ -23,13 +23,15 @@ struct CliRun {
 
 CliRun run_cli(const TempDir& dir, const std::string& args) {
   const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string(CVTMESH_CLI) + " " + args + " >" + out.string() +
-                              " 2>" + err.string() + " </dev/null";
+  const std::string command = std::string(CVTMESH_CLI) + " " + args + " >" + out.string() + " 2>" +
+                              err.string() + " </dev/null";
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
 }
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+std::string quoted(const std::filesystem::path& p) {
+  return "'" + p.string() + "'";
+}
 
 TEST(Cli, VersionAndHelp) {
   TempDir dir;
@@ -54,10 +56,20 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   EXPECT_EQ(run_cli(dir, "quality x.off --threads -1").code, 2);
 }
 
-const char* kRequiredKeys[] = {"vertices", "faces", "components", "boundary_loops",
-                               "nonmanifold_edges", "euler_characteristic", "q_min", "q_avg",
-                               "angle_min_deg", "angle_min_avg_deg", "angle_max_deg",
-                               "pct_angle_below_30", "edge_length_mean", "edge_length_std"};
+const char* kRequiredKeys[] = {"vertices",
+                               "faces",
+                               "components",
+                               "boundary_loops",
+                               "nonmanifold_edges",
+                               "euler_characteristic",
+                               "q_min",
+                               "q_avg",
+                               "angle_min_deg",
+                               "angle_min_avg_deg",
+                               "angle_max_deg",
+                               "pct_angle_below_30",
+                               "edge_length_mean",
+                               "edge_length_std"};
 
 TEST(Cli, QualityJsonHasEveryKeyWithTheMeshValues) {
   TempDir dir;
@@ -79,7 +91,7 @@ TEST(Cli, QualityWithReferenceAddsHausdorffAndTopology) {
   write_mesh(dir / "big.obj", transformed(icosphere(3), 1.01));
   write_mesh(dir / "torus.stl", torus(1, 0.3, 24, 12));
   CliRun r = run_cli(dir, "quality --json --samples 20000 " + quoted(dir / "big.obj") + " --ref " +
-                           quoted(dir / "unit.ply"));
+                              quoted(dir / "unit.ply"));
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct"})
@@ -108,7 +120,9 @@ struct BadInput {
   std::string name, content, expected;
 };
 
-void PrintTo(const BadInput& bad, std::ostream* os) { *os << bad.name; }
+void PrintTo(const BadInput& bad, std::ostream* os) {
+  *os << bad.name;
+}
 
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -137,6 +151,14 @@ std::string binary_stl_header(std::uint32_t count) {
   return s;
 }
 
+// An ASCII PLY with 3 vertices and 1 face, whose data follow the header.
+std::string one_triangle_ply(const std::string& data) {
+  return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n" +
+         data;
+}
+
 INSTANTIATE_TEST_SUITE_P(
     EveryCase, CliBadInput,
     ::testing::Values(
@@ -148,19 +170,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"nofaces.off", "OFF\n0 0 0\n", "empty mesh"},
         BadInput{"nan.off", "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n", "non-finite"},
         BadInput{"inf.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n", "non-finite"},
-        BadInput{"nan.ply",
-                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                 "end_header\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n",
-                 "non-finite"},
+        BadInput{"nan.ply", one_triangle_ply("0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n"), "non-finite"},
         BadInput{"range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "out of range"},
         BadInput{"range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "out of range"},
         BadInput{"negative.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -5\n", "out of range"},
-        BadInput{"range.ply",
-                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
-                 "out of range"},
+        BadInput{"range.ply", one_triangle_ply("0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), "out of range"},
         BadInput{"edge.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "2 corners"},
         BadInput{"edge.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "2 corners"},
         BadInput{"short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", "truncated OFF"},
@@ -176,7 +190,8 @@ TEST(Cli, RepairWritesCleanMeshAndReportsWhatItDid) {
   TempDir dir;
   write_file(dir / "in.obj",
              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nv 5 5 5\nf 1 2 3\nf 1 2 3\nf 1 4 2\n");
-  const CliRun r = run_cli(dir, "repair --json " + quoted(dir / "in.obj") + " " + quoted(dir / "out.ply"));
+  const CliRun r =
+      run_cli(dir, "repair --json " + quoted(dir / "in.obj") + " " + quoted(dir / "out.ply"));
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["duplicate_vertices_merged"], 1);
@@ -204,7 +219,8 @@ TEST(Cli, RepairNeverWritesOverItsInput) {
 TEST(Cli, UnwritableOutputExitsWithFourAndLeavesNothing) {
   TempDir dir;
   write_mesh(dir / "in.off", icosphere(1));
-  const CliRun r = run_cli(dir, "repair " + quoted(dir / "in.off") + " " + quoted(dir / "no" / "out.off"));
+  const CliRun r =
+      run_cli(dir, "repair " + quoted(dir / "in.off") + " " + quoted(dir / "no" / "out.off"));
   EXPECT_EQ(r.code, 4);
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "no"));

@@ -96,7 +96,8 @@ TEST(ReadMesh, BinaryBigEndianPly) {
     body += '\3';
     for (int v : {0, 1 + f, 2 + f}) body += big_endian_int(v);
   }
-  write_file(dir / "be.ply", std::string("ply\nformat binary_big_endian 1.0\n") + kPlyHeader + body);
+  write_file(dir / "be.ply",
+             std::string("ply\nformat binary_big_endian 1.0\n") + kPlyHeader + body);
   const TriangleMesh m = read_mesh(dir / "be.ply");
   ASSERT_EQ(m.triangles.size(), 2u);
   EXPECT_EQ(m.vertices[2], (Vec3{1, 1.5, 0}));
@@ -137,7 +138,8 @@ TEST(WriteMesh, LeavesNoTemporaryFileBehind) {
   write_mesh(dir / "a.ply", icosphere(1));
   write_mesh(dir / "a.ply", icosphere(2));  // replaces the first one whole
   std::size_t files = 0;
-  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++files;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path()))
+    ++files;
   EXPECT_EQ(files, 1u);
   EXPECT_EQ(read_mesh(dir / "a.ply").triangles.size(), icosphere(2).triangles.size());
 }
@@ -154,7 +156,8 @@ TEST(EnsureDistinctOutput, RefusesTheInputUnderAnyName) {
   write_mesh(dir / "in.obj", icosphere(0));
   std::filesystem::create_symlink(dir / "in.obj", dir / "link.obj");
   EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir / "in.obj"), InvalidArgument);
-  EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir.path() / "." / "in.obj"), InvalidArgument);
+  EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir.path() / "." / "in.obj"),
+               InvalidArgument);
   EXPECT_THROW(ensure_distinct_output(dir / "in.obj", dir / "link.obj"), InvalidArgument);
   EXPECT_NO_THROW(ensure_distinct_output(dir / "in.obj", dir / "out.obj"));
 }

@@ -39,7 +39,8 @@ TEST(TriangleShape, SliverMatchesHandComputedValues) {
 
 TEST(TriangleShape, QualityIsInvariantUnderScalingAndMotion) {
   const TriangleShape a = triangle_shape({0, 0, 0}, {1, 0.2, 0}, {0.3, 0.9, 0.1});
-  const TriangleShape b = triangle_shape({5, 5, 5}, {5 + 1e3, 5 + 0.2e3, 5}, {5 + 0.3e3, 5 + 0.9e3, 5 + 0.1e3});
+  const TriangleShape b =
+      triangle_shape({5, 5, 5}, {5 + 1e3, 5 + 0.2e3, 5}, {5 + 0.3e3, 5 + 0.9e3, 5 + 0.1e3});
   EXPECT_NEAR(a.quality, b.quality, 1e-12);
   EXPECT_NEAR(a.min_angle, b.min_angle, 1e-9);
 }
@@ -58,8 +59,7 @@ TEST(TriangleShape, DegenerateTrianglesHaveZeroQuality) {
 TEST(MeasureQuality, AggregatesOverTrianglesAndDistinctEdges) {
   // Triangle 0: equilateral (side 2). Triangle 1: right isosceles (legs 1). Triangle 2: sliver.
   TriangleMesh m;
-  m.vertices = {{0, 0, 0}, {2, 0, 0}, {1, std::sqrt(3.0), 0},
-                {10, 0, 0}, {11, 0, 0}, {10, 1, 0},
+  m.vertices = {{0, 0, 0},  {2, 0, 0},  {1, std::sqrt(3.0), 0}, {10, 0, 0}, {11, 0, 0}, {10, 1, 0},
                 {20, 0, 0}, {21, 0, 0}, {20.5, 0.01, 0}};
   m.triangles = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}};
   const QualityReport q = measure_quality(m);
@@ -89,7 +89,8 @@ TEST(MeasureQuality, SharedEdgesCountOnce) {
   const QualityReport q = measure_quality(m);
   const double mean = (4 + std::sqrt(2.0)) / 5;
   EXPECT_NEAR(q.edge_length_mean, mean, kTol);
-  const double var = (4 * (1 - mean) * (1 - mean) + (std::sqrt(2.0) - mean) * (std::sqrt(2.0) - mean)) / 5;
+  const double var =
+      (4 * (1 - mean) * (1 - mean) + (std::sqrt(2.0) - mean) * (std::sqrt(2.0) - mean)) / 5;
   EXPECT_NEAR(q.edge_length_std, std::sqrt(var), kTol);
   EXPECT_EQ(q.pct_angle_below_30, 0.0);
 }

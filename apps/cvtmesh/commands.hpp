@@ -2,8 +2,8 @@
 // sets `run` to the action to perform once all arguments are parsed.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 
 #include <functional>
 #include <memory>

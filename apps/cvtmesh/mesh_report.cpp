@@ -43,8 +43,9 @@ void add_reference_json(nlohmann::ordered_json& j, const HausdorffReport& h,
 std::string topology_line(const TopologyReport& t) {
   std::string s = fmt::format("{} vertices, {} triangles, {} component{}, ", t.vertices,
                               t.triangles, t.components, t.components == 1 ? "" : "s");
-  s += t.is_closed() ? "closed" : fmt::format("{} boundary loop{}", t.boundary_loops,
-                                              t.boundary_loops == 1 ? "" : "s");
+  s += t.is_closed()
+           ? "closed"
+           : fmt::format("{} boundary loop{}", t.boundary_loops, t.boundary_loops == 1 ? "" : "s");
   s += fmt::format(", Euler characteristic {}", t.euler_characteristic);
   if (t.genus) s += fmt::format(", genus {}", *t.genus);
   if (!t.is_manifold())
@@ -61,8 +62,8 @@ std::string quality_lines(const QualityReport& q) {
       "  angles    θmin {:.2f}°   θmin_ave {:.2f}°   θmax {:.2f}°   triangles with θmin < 30°: "
       "{:.2f}%\n"
       "  edges     mean length {:.6g}   std {:.6g}\n",
-      q.q_min, q.q_avg, q.angle_min_deg, q.angle_min_avg_deg, q.angle_max_deg,
-      q.pct_angle_below_30, q.edge_length_mean, q.edge_length_std);
+      q.q_min, q.q_avg, q.angle_min_deg, q.angle_min_avg_deg, q.angle_max_deg, q.pct_angle_below_30,
+      q.edge_length_mean, q.edge_length_std);
 }
 
 std::string hausdorff_lines(const HausdorffReport& h, const TopologyReport& self,
@@ -85,7 +86,8 @@ void warn_about_topology(const std::string& file, const TopologyReport& t) {
                t.nonmanifold_edges);
   if (t.nonmanifold_vertices > 0)
     fmt::print(stderr, "{}: warning: {} non-manifold vertices\n", file, t.nonmanifold_vertices);
-  if (t.components > 1) fmt::print(stderr, "{}: note: {} connected components\n", file, t.components);
+  if (t.components > 1)
+    fmt::print(stderr, "{}: note: {} connected components\n", file, t.components);
   if (!t.orientable) fmt::print(stderr, "{}: note: the surface is not orientable\n", file);
 }
 

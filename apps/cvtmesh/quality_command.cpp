@@ -37,7 +37,8 @@ int run_quality(const QualityOptions& o) {
   warn_about_topology(o.mesh, topology);
   const QualityReport quality = measure_quality(mesh);
   auto json = mesh_json(topology, quality);
-  std::string text = fmt::format("{}: {}\n", o.mesh, topology_line(topology)) + quality_lines(quality);
+  std::string text =
+      fmt::format("{}: {}\n", o.mesh, topology_line(topology)) + quality_lines(quality);
   if (!o.reference.empty()) {
     const TriangleMesh reference = read_mesh(o.reference);
     const TopologyReport ref_topology = analyze_topology(reference);
@@ -55,7 +56,8 @@ int run_quality(const QualityOptions& o) {
 
 void add_quality_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<QualityOptions>();
-  CLI::App* cmd = app.add_subcommand("quality", "Report a mesh's counts, topology and triangle quality");
+  CLI::App* cmd =
+      app.add_subcommand("quality", "Report a mesh's counts, topology and triangle quality");
   cmd->add_option("MESH", options->mesh, "Mesh to measure (.obj, .off, .ply, .stl)")->required();
   cmd->add_option("--ref", options->reference,
                   "Reference mesh: adds the two-sided Hausdorff distance and a topology check");

@@ -22,7 +22,8 @@ int run_repair(const RepairOptions& o) {
   const RepairReport repairs = repair_mesh(mesh);
   if (mesh.triangles.empty())
     throw InputError(o.input + ": no triangle with non-zero area is left after repair");
-  fmt::print(stderr, "{}: {}\n", o.input, repairs.changed() ? repairs.summary() : "nothing to repair");
+  fmt::print(stderr, "{}: {}\n", o.input,
+             repairs.changed() ? repairs.summary() : "nothing to repair");
   const TopologyReport topology = analyze_topology(mesh);
   warn_about_topology(o.output, topology);
   write_mesh(o.output, mesh);

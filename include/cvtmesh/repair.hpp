@@ -9,14 +9,14 @@
 namespace cvtmesh {
 
 struct RepairReport {
-  std::size_t duplicate_vertices_merged = 0;  // vertices with exactly equal coordinates
+  std::size_t duplicate_vertices_merged = 0;     // vertices with exactly equal coordinates
   std::size_t degenerate_triangles_removed = 0;  // zero area (repeated or collinear corners)
   std::size_t duplicate_triangles_removed = 0;   // same three vertices, any order or orientation
   std::size_t unreferenced_vertices_removed = 0;
 
   bool changed() const {
-    return duplicate_vertices_merged + degenerate_triangles_removed +
-               duplicate_triangles_removed + unreferenced_vertices_removed >
+    return duplicate_vertices_merged + degenerate_triangles_removed + duplicate_triangles_removed +
+               unreferenced_vertices_removed >
            0;
   }
   // "merged 3 duplicate vertices, removed 2 zero-area triangles", or "" if nothing changed.

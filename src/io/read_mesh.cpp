@@ -79,10 +79,14 @@ bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbos
 
 std::string format_name(MeshFormat format) {
   switch (format) {
-    case MeshFormat::obj: return "OBJ";
-    case MeshFormat::off: return "OFF";
-    case MeshFormat::ply: return "PLY";
-    case MeshFormat::stl: return "STL";
+    case MeshFormat::obj:
+      return "OBJ";
+    case MeshFormat::off:
+      return "OFF";
+    case MeshFormat::ply:
+      return "PLY";
+    case MeshFormat::stl:
+      return "STL";
   }
   return "?";
 }

@@ -13,7 +13,9 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Kernel::Point_3 point(const Vec3& v) { return {v.x, v.y, v.z}; }
+Kernel::Point_3 point(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
 
 // Keeps the vertices with keep[v], in order, and renumbers the triangles.
 void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {

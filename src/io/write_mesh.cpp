@@ -24,12 +24,15 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh) {
   const auto& triangles = mesh.triangles;
 
   // ASCII coordinates with 17 significant digits read back to the same doubles.
-  const auto exact_text = CGAL::parameters::stream_precision(std::numeric_limits<double>::max_digits10);
+  const auto exact_text =
+      CGAL::parameters::stream_precision(std::numeric_limits<double>::max_digits10);
   const bool binary = *format == MeshFormat::ply || *format == MeshFormat::stl;
   io::write_atomically(path, binary, [&](std::ostream& out) {
     switch (*format) {
-      case MeshFormat::obj: return CGAL::IO::write_OBJ(out, points, triangles, exact_text);
-      case MeshFormat::off: return CGAL::IO::write_OFF(out, points, triangles, exact_text);
+      case MeshFormat::obj:
+        return CGAL::IO::write_OBJ(out, points, triangles, exact_text);
+      case MeshFormat::off:
+        return CGAL::IO::write_OFF(out, points, triangles, exact_text);
       case MeshFormat::ply:
         CGAL::IO::set_binary_mode(out);
         return CGAL::IO::write_PLY(out, points, triangles);

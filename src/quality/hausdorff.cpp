@@ -22,7 +22,9 @@ using Triangles = std::vector<Kernel::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 point(const Vec3& v) { return {v.x, v.y, v.z}; }
+Kernel::Point_3 point(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
 
 // Distance queries against one surface, safe to call from many threads once built.
 class SurfaceDistance {
@@ -77,8 +79,8 @@ class AreaSampler {
 
 // Max over samples and vertices; mean and RMS over the area samples (an unbiased estimate of
 // the area-weighted mean). Reduced serially in sample order: bit-identical for any thread count.
-OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceDistance& to,
-                           std::size_t samples, std::uint64_t seed) {
+OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceDistance& to, std::size_t samples,
+                           std::uint64_t seed) {
   const AreaSampler sampler(from, seed);
   if (!sampler.has_area()) samples = 0;
   std::vector<double> d2(samples + from.vertices.size());

@@ -96,8 +96,10 @@ TopologyReport analyze_topology(const TriangleMesh& mesh) {
   for (std::size_t c = 0; c < 3 * nt; ++c) {
     const Index v = mesh.triangles[c / 3][c % 3];
     const std::size_t fan = fans.find(c);
-    if (first_fan[v] == SIZE_MAX) first_fan[v] = fan;
-    else if (first_fan[v] != fan) nonmanifold_vertex[v] = true;
+    if (first_fan[v] == SIZE_MAX)
+      first_fan[v] = fan;
+    else if (first_fan[v] != fan)
+      nonmanifold_vertex[v] = true;
   }
   r.nonmanifold_vertices = std::count(nonmanifold_vertex.begin(), nonmanifold_vertex.end(), true);
 

@@ -58,14 +58,14 @@ QualityReport measure_quality(const TriangleMesh& mesh) {
   std::vector<std::pair<Index, Index>> edges;
   edges.reserve(3 * mesh.triangles.size());
   for (const Triangle& f : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      edges.push_back(std::minmax(f[k], f[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) edges.push_back(std::minmax(f[k], f[(k + 1) % 3]));
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   std::vector<double> lengths;
   lengths.reserve(edges.size());
   double sum = 0;
-  for (const auto& [u, v] : edges) sum += lengths.emplace_back(distance(mesh.vertices[u], mesh.vertices[v]));
+  for (const auto& [u, v] : edges)
+    sum += lengths.emplace_back(distance(mesh.vertices[u], mesh.vertices[v]));
   r.edge_length_mean = sum / static_cast<double>(lengths.size());
   // Population standard deviation, two-pass to avoid cancellation on near-uniform meshes.
   double sum_sq = 0;

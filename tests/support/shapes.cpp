@@ -11,15 +11,17 @@ namespace cvtmesh::testing {
 
 namespace {
 
-Vec3 normalized(const Vec3& v) { return (1.0 / norm(v)) * v; }
+Vec3 normalized(const Vec3& v) {
+  return (1.0 / norm(v)) * v;
+}
 
 }  // namespace
 
 TriangleMesh icosphere(int levels, double radius) {
   const double p = (1 + std::sqrt(5.0)) / 2;
   TriangleMesh m;
-  m.vertices = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
-                {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
+  m.vertices = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
+                {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
   for (Vec3& v : m.vertices) v = normalized(v);
   m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                  {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
@@ -54,8 +56,8 @@ TriangleMesh torus(double R, double r, int nu, int nv) {
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
       const double u = tau * i / nu, v = tau * j / nv;
-      m.vertices.push_back(
-          {(R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+      m.vertices.push_back({(R + r * std::cos(v)) * std::cos(u),
+                            (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
     }
   }
   auto id = [&](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
