@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "cvtmesh/errors.hpp"
-#include "geometry/random.hpp"
+#include "geometry/area_sampler.hpp"
 
 namespace cvtmesh {
 
@@ -44,37 +44,6 @@ class SurfaceDistance {
  private:
   Triangles triangles_;
   Tree tree_;
-};
-
-// Sample k of `count` area-uniform samples of `mesh`; a pure function of (seed, k), so the set
-// of samples does not depend on how the work is split between threads.
-class AreaSampler {
- public:
-  AreaSampler(const TriangleMesh& mesh, std::uint64_t seed) : mesh_(mesh), seed_(seed) {
-    cumulative_.reserve(mesh.triangles.size());
-    double sum = 0;
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const auto [a, b, c] = mesh.corners(t);
-      cumulative_.push_back(sum += triangle_area(a, b, c));
-    }
-  }
-  Vec3 operator()(std::uint64_t k) const {
-    CounterRng rng(seed_, k);
-    const double target = rng.uniform() * cumulative_.back();
-    const std::size_t t = std::min<std::size_t>(
-        std::upper_bound(cumulative_.begin(), cumulative_.end(), target) - cumulative_.begin(),
-        cumulative_.size() - 1);
-    const auto [a, b, c] = mesh_.corners(t);
-    // Uniform point in a triangle: s = √u1 along the median direction, u2 across.
-    const double s = std::sqrt(rng.uniform()), u = rng.uniform();
-    return (1 - s) * a + (s * (1 - u)) * b + (s * u) * c;
-  }
-  bool has_area() const { return !cumulative_.empty() && cumulative_.back() > 0; }
-
- private:
-  const TriangleMesh& mesh_;
-  std::uint64_t seed_;
-  std::vector<double> cumulative_;
 };
 
 // Max over samples and vertices; mean and RMS over the area samples (an unbiased estimate of

@@ -1,0 +1,87 @@
+// The restricted Voronoi diagram (RVD) of seeds on a triangle surface, computed exactly
+// (paper §3): every input triangle is clipped by the Voronoi cells that meet it, found by
+// propagation from the seed nearest to its centroid. Combinatorial decisions use exact
+// predicates on the vertices' symbolic definitions, with a symbolic perturbation so that no
+// decision is ever a tie. Works on a triangle soup: no connectivity is needed.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+// A vertex of a clipped polygon. Besides the input facet's plane it lies on two planes, its
+// symbols: a value s >= 0 is the bisector of the cell's seed and seed s; a value < 0 is the input
+// triangle's edge -(s+1), edge e joining corners e and (e+1)%3. Type A (an input corner) has two
+// edges, type B (an input edge ∩ a bisector) one of each, type C (two bisectors) two bisectors.
+struct RvdVertex {
+  Vec3 point;    // rounded position
+  double error;  // |exact − point| ≤ error in each coordinate (0 for input corners)
+  std::array<std::int32_t, 2> symbols;
+
+  int bisector_count() const { return (symbols[0] >= 0) + (symbols[1] >= 0); }
+};
+
+// The part of input triangle `triangle` inside the Voronoi cell of `seed`: a convex polygon,
+// vertices in the input triangle's orientation.
+struct RvdPolygon {
+  Index seed;
+  Index triangle;
+  std::span<const RvdVertex> vertices;
+};
+
+// Receives the polygons of one traversal. Triangles are split into chunks of consecutive
+// triangles; chunks run in parallel, each chunk's polygons arrive in order (triangle, then seed
+// discovery order) on one thread. Reducing per chunk, then over chunks in order, makes results
+// independent of the thread count.
+class PolygonSink {
+ public:
+  virtual ~PolygonSink() = default;
+  virtual void begin(std::size_t chunks) = 0;
+  virtual void polygon(std::size_t chunk, const RvdPolygon& polygon) = 0;
+  virtual void end() {}
+};
+
+struct TraversalStats {
+  std::size_t polygons = 0;
+  std::size_t predicates = 0;       // side-of-bisector decisions
+  std::size_t exact_fallbacks = 0;  // decisions the floating-point filter left to exact arithmetic
+  std::size_t perturbed_ties = 0;   // exact ties decided by the symbolic perturbation
+};
+
+struct RvdBuildTimes {
+  double kdtree_seconds = 0, delaunay_seconds = 0;
+};
+
+class RestrictedVoronoiDiagram {
+ public:
+  // Builds the seeds' Delaunay triangulation (their Voronoi neighbours) and a kd-tree. Throws
+  // InvalidArgument for no seeds, a non-finite seed, or two identical seeds (naming both).
+  // `surface` must outlive this object.
+  RestrictedVoronoiDiagram(const TriangleMesh& surface, std::vector<Vec3> seeds);
+  ~RestrictedVoronoiDiagram();
+  RestrictedVoronoiDiagram(RestrictedVoronoiDiagram&&) noexcept;
+  RestrictedVoronoiDiagram& operator=(RestrictedVoronoiDiagram&&) noexcept;
+
+  // Clips every triangle and hands each non-empty polygon to each sink, in one pass.
+  TraversalStats traverse(std::span<PolygonSink* const> sinks) const;
+  TraversalStats traverse(PolygonSink& sink) const;
+
+  const TriangleMesh& surface() const;
+  const std::vector<Vec3>& seeds() const;
+  // Voronoi neighbours of a seed (its Delaunay edges), nearest first.
+  std::span<const Index> neighbors(Index seed) const;
+  const RvdBuildTimes& build_times() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cvtmesh

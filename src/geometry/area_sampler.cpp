@@ -1,0 +1,31 @@
+#include "geometry/area_sampler.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/random.hpp"
+
+namespace cvtmesh {
+
+AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed) : mesh_(mesh), seed_(seed) {
+  cumulative_.reserve(mesh.triangles.size());
+  double sum = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    cumulative_.push_back(sum += triangle_area(a, b, c));
+  }
+}
+
+Vec3 AreaSampler::operator()(std::uint64_t k) const {
+  CounterRng rng(seed_, k);
+  const double target = rng.uniform() * cumulative_.back();
+  const std::size_t t = std::min<std::size_t>(
+      std::upper_bound(cumulative_.begin(), cumulative_.end(), target) - cumulative_.begin(),
+      cumulative_.size() - 1);
+  const auto [a, b, c] = mesh_.corners(t);
+  // Uniform point in a triangle: s = √u1 along the median direction, u2 across.
+  const double s = std::sqrt(rng.uniform()), u = rng.uniform();
+  return (1 - s) * a + (s * (1 - u)) * b + (s * u) * c;
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,24 @@
+// Area-uniform random points on a triangle mesh; sample k is a pure function of (seed, k), so
+// the set of samples does not depend on how the work is split between threads.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+class AreaSampler {
+ public:
+  AreaSampler(const TriangleMesh& mesh, std::uint64_t seed);
+  Vec3 operator()(std::uint64_t k) const;
+  bool has_area() const { return !cumulative_.empty() && cumulative_.back() > 0; }
+
+ private:
+  const TriangleMesh& mesh_;
+  std::uint64_t seed_;
+  std::vector<double> cumulative_;  // prefix sums of triangle areas
+};
+
+}  // namespace cvtmesh

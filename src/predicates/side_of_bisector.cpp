@@ -1,0 +1,249 @@
+// Derivation (translated so that the cell's seed x_i is the origin: Q = q − x_i, J = x_j − x_i,
+// K = x_k − x_i, L = x_l − x_i). With power-diagram weights w_s, the side of v is the sign of
+//   d = π_i(v) − π_j(v) = 2 v·J − J·J − w_i + w_j,         d < 0: v is closer to x_i,
+// and bisector (i, k) is the plane 2 v·K = K·K + w_i − w_k.
+//   A, v = q:                      d = J·(2Q − J) + (w_j − w_i).
+//   B, v = [q1 q2] ∩ bisector k:   v = Q1 + t (Q2 − Q1), t = (N + w_i − w_k)/D,
+//        N = K·K − 2 Q1·K, D = 2 (Q2 − Q1)·K, E = 2 (Q2 − Q1)·J:
+//        D·d = [2 (Q1·J) D + N E − (J·J) D] + (w_i − w_k) E + (w_j − w_i) D.
+//   C, v = facet ∩ bisectors k, l: rows r0 = 2K, r1 = 2L, r2 = n (facet normal),
+//        b = (K·K, L·L, n·Q0), D = det(r0, r1, r2), G = 2J, u_r = det(rows, row r ← G):
+//        D·d = [Σ b_r u_r − (J·J) D] + (w_i − w_k) u0 + (w_i − w_l) u1 + (w_j − w_i) D.
+// The bracket is the unperturbed value (degree 2, 4 over 2, 6 over 4 in the inputs, paper §3.4).
+// With w_s = ε^(s+1), when it is exactly zero the sign is that of the coefficient of the
+// lowest-index seed whose coefficient is not zero (the coefficient of w_j is ±D ≠ 0, so one is).
+#include "predicates/side_of_bisector.hpp"
+
+#include <CGAL/Mpzf.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "predicates/bounded_double.hpp"
+
+namespace cvtmesh::predicates {
+
+namespace {
+
+template <class NT>
+struct V {
+  NT x, y, z;
+};
+
+template <class NT>
+V<NT> diff(const Vec3& a, const Vec3& b) {
+  return {NT(a.x) - NT(b.x), NT(a.y) - NT(b.y), NT(a.z) - NT(b.z)};
+}
+template <class NT>
+V<NT> operator-(const V<NT>& a, const V<NT>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class NT>
+V<NT> operator+(const V<NT>& a, const V<NT>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class NT>
+V<NT> scaled(const NT& s, const V<NT>& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+template <class NT>
+NT dot(const V<NT>& a, const V<NT>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class NT>
+V<NT> cross(const V<NT>& a, const V<NT>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <class NT>
+NT det(const V<NT>& a, const V<NT>& b, const V<NT>& c) {
+  return dot(a, cross(b, c));
+}
+
+// Which planes define a vertex, decoded from its two symbols.
+struct Definition {
+  int bisectors;       // 0: type A, 1: B, 2: C
+  int corner = -1;     // A: the input corner
+  int edge = -1;       // B: the input edge, from corner edge to corner edge+1
+  Index k = 0, l = 0;  // B: k; C: k and l
+};
+
+int edge_of(std::int32_t symbol) {
+  return -symbol - 1;
+}
+
+Definition define(const RvdVertex& v) {
+  const auto [s0, s1] = v.symbols;
+  if (s0 < 0 && s1 < 0) {
+    const int e0 = edge_of(s0), e1 = edge_of(s1);
+    return {0, (e0 + 1) % 3 == e1 ? e1 : e0};
+  }
+  if (s0 >= 0 && s1 >= 0) return {2, -1, -1, static_cast<Index>(s0), static_cast<Index>(s1)};
+  return {1, -1, edge_of(std::min(s0, s1)), static_cast<Index>(std::max(s0, s1))};
+}
+
+// The unperturbed value of D·d and the denominator D (1 for type A), and the coefficients of
+// the perturbation weights, as (seed, coefficient) pairs.
+template <class NT>
+struct Expansion {
+  NT value, denominator;
+  std::array<std::pair<Index, NT>, 4> weights;
+  int weight_count = 0;
+};
+
+template <class NT>
+Expansion<NT> expand(const ClipFrame& f, const Definition& def, Index j) {
+  const Vec3& xi = f.seeds[f.cell];
+  const V<NT> J = diff<NT>(f.seeds[j], xi);
+  const NT JJ = dot(J, J);
+  Expansion<NT> e;
+  if (def.bisectors == 0) {
+    const V<NT> Q = diff<NT>(f.corners[def.corner], xi);
+    e.value = dot(J, Q + Q - J);
+    e.denominator = NT(1);
+    e.weights = {{{f.cell, NT(-1)}, {j, NT(1)}}};
+    e.weight_count = 2;
+  } else if (def.bisectors == 1) {
+    const V<NT> Q1 = diff<NT>(f.corners[def.edge], xi);
+    const V<NT> Q2 = diff<NT>(f.corners[(def.edge + 1) % 3], xi);
+    const V<NT> K = diff<NT>(f.seeds[def.k], xi);
+    const V<NT> edge = Q2 - Q1;
+    const NT two(2);
+    const NT N = dot(K, K) - two * dot(Q1, K);
+    const NT D = two * dot(edge, K);
+    const NT E = two * dot(edge, J);
+    e.value = two * dot(Q1, J) * D + N * E - JJ * D;
+    e.denominator = D;
+    e.weights = {{{f.cell, E - D}, {def.k, NT(0) - E}, {j, D}}};
+    e.weight_count = 3;
+  } else {
+    const V<NT> K = diff<NT>(f.seeds[def.k], xi);
+    const V<NT> L = diff<NT>(f.seeds[def.l], xi);
+    const V<NT> n =
+        cross(diff<NT>(f.corners[1], f.corners[0]), diff<NT>(f.corners[2], f.corners[0]));
+    const V<NT> Q0 = diff<NT>(f.corners[0], xi);
+    const NT two(2);
+    const V<NT> r0 = scaled(two, K), r1 = scaled(two, L), G = scaled(two, J);
+    const NT D = det(r0, r1, n);
+    const NT u0 = det(G, r1, n), u1 = det(r0, G, n), u2 = det(r0, r1, G);
+    e.value = dot(K, K) * u0 + dot(L, L) * u1 + dot(n, Q0) * u2 - JJ * D;
+    e.denominator = D;
+    e.weights = {{{f.cell, u0 + u1 - D}, {def.k, NT(0) - u0}, {def.l, NT(0) - u1}, {j, D}}};
+    e.weight_count = 4;
+  }
+  return e;
+}
+
+int sign_of(const CGAL::Mpzf& x) {
+  return static_cast<int>(x.sign());
+}
+
+// Exact sign of d, with ties broken by the perturbation.
+int exact_side(const ClipFrame& f, const Definition& def, Index j, PredicateCounters& counters) {
+  ++counters.exact_fallbacks;
+  Expansion<CGAL::Mpzf> e = expand<CGAL::Mpzf>(f, def, j);
+  const int denominator = sign_of(e.denominator);
+  assert(denominator != 0);
+  if (const int s = sign_of(e.value); s != 0) return s * denominator;
+  ++counters.perturbed_ties;
+  // The nonzero coefficient of the lowest seed index decides.
+  int decider = -1;
+  for (int w = 0; w < e.weight_count; ++w)
+    if (sign_of(e.weights[w].second) != 0 &&
+        (decider < 0 || e.weights[w].first < e.weights[decider].first))
+      decider = w;
+  if (decider >= 0) return sign_of(e.weights[decider].second) * denominator;
+  assert(false && "perturbation left a tie");
+  return 1;
+}
+
+BoundedDouble bounded(double value, double error) {
+  return {value, error};
+}
+
+}  // namespace
+
+bool closer_to_cell(const ClipFrame& f, const RvdVertex& v, Index j, PredicateCounters& counters) {
+  ++counters.predicates;
+  const Vec3& xi = f.seeds[f.cell];
+  const Vec3& xj = f.seeds[j];
+  // Filter 1: the vertex's rounded position and its error bound, d = J·((v − x_i) + (v − x_j)).
+  const V<BoundedDouble> p{bounded(v.point.x, v.error), bounded(v.point.y, v.error),
+                           bounded(v.point.z, v.error)};
+  const V<BoundedDouble> to_i = p - V<BoundedDouble>{xi.x, xi.y, xi.z};
+  const V<BoundedDouble> to_j = p - V<BoundedDouble>{xj.x, xj.y, xj.z};
+  if (const int s = dot(diff<BoundedDouble>(xj, xi), to_i + to_j).certain_sign(); s != 0)
+    return s < 0;
+  // Filter 2: the symbolic formula in bounded doubles.
+  const Definition def = define(v);
+  if (def.bisectors > 0) {
+    const Expansion<BoundedDouble> e = expand<BoundedDouble>(f, def, j);
+    const int num = e.value.certain_sign(), den = e.denominator.certain_sign();
+    if (num != 0 && den != 0) return num * den < 0;
+  }
+  return exact_side(f, def, j, counters) < 0;
+}
+
+namespace {
+
+std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b) {
+  for (std::int32_t s : a.symbols)
+    if (s == b.symbols[0] || s == b.symbols[1]) return s;
+  assert(false && "consecutive polygon vertices share no plane");
+  return a.symbols[0];
+}
+
+// Position of a B or C vertex from its definition, in bounded doubles (cell seed at origin).
+V<BoundedDouble> crossing_position(const ClipFrame& f, const Definition& def) {
+  using B = BoundedDouble;
+  const Vec3& xi = f.seeds[f.cell];
+  const V<B> K = diff<B>(f.seeds[def.k], xi);
+  const B two(2);
+  if (def.bisectors == 1) {
+    const V<B> Q1 = diff<B>(f.corners[def.edge], xi);
+    const V<B> edge = diff<B>(f.corners[(def.edge + 1) % 3], xi) - Q1;
+    const B t = (dot(K, K) - two * dot(Q1, K)) / (two * dot(edge, K));
+    return Q1 + scaled(t, edge);
+  }
+  const V<B> L = diff<B>(f.seeds[def.l], xi);
+  const V<B> n = cross(diff<B>(f.corners[1], f.corners[0]), diff<B>(f.corners[2], f.corners[0]));
+  const V<B> r0 = scaled(two, K), r1 = scaled(two, L);
+  const B D = det(r0, r1, n);
+  // M⁻¹ = [r1×r2 | r2×r0 | r0×r1] / D for the matrix M of rows r0, r1, r2 = n.
+  const V<B> numerator = scaled(dot(K, K), cross(r1, n)) + scaled(dot(L, L), cross(n, r0)) +
+                         scaled(dot(n, diff<B>(f.corners[0], xi)), cross(r0, r1));
+  return {numerator.x / D, numerator.y / D, numerator.z / D};
+}
+
+}  // namespace
+
+RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVertex& b, Index j) {
+  RvdVertex v;
+  const std::int32_t shared = common_symbol(a, b);
+  v.symbols = {shared, static_cast<std::int32_t>(j)};
+  const V<BoundedDouble> p = crossing_position(f, define(v));
+  const Vec3& xi = f.seeds[f.cell];
+  const BoundedDouble x = p.x + xi.x, y = p.y + xi.y, z = p.z + xi.z;
+  v.point = {x.value, y.value, z.value};
+  v.error = std::max({x.error, y.error, z.error});
+  if (!std::isfinite(v.error) || !std::isfinite(v.point.x + v.point.y + v.point.z)) {
+    // Nearly parallel planes: the formula is ill-conditioned. Interpolate along the segment
+    // where the (approximate) side function changes sign; this position serves integration
+    // only, and the infinite bound sends every predicate on this vertex to exact arithmetic.
+    const Vec3& xj = f.seeds[j];
+    auto side = [&](const Vec3& q) { return dot(xj - xi, (q - xi) + (q - xj)); };
+    const double da = side(a.point), db = side(b.point);
+    const double t = da == db ? 0.5 : std::clamp(da / (da - db), 0.0, 1.0);
+    v.point = a.point + t * (b.point - a.point);
+    v.error = std::numeric_limits<double>::infinity();
+  }
+  return v;
+}
+
+RvdVertex corner_vertex(const ClipFrame& f, int k) {
+  return {f.corners[k], 0.0, {-((k + 2) % 3) - 1, -k - 1}};
+}
+
+}  // namespace cvtmesh::predicates

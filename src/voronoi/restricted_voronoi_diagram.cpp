@@ -1,0 +1,181 @@
+// The RVD traversal (paper §3.1-3.3): per input triangle, a FIFO queue of cells starting from
+// the seed nearest to the centroid; each cell clips the triangle by its bisectors, and a
+// neighbour whose bisector actually cut the polygon joins the queue.
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <deque>
+
+#include "cvtmesh/rvd.hpp"
+#include "predicates/side_of_bisector.hpp"
+#include "voronoi/nearest_seed.hpp"
+#include "voronoi/seed_neighbors.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// Triangles per chunk: fixed, so the chunking (and the reduction order of every sink) does not
+// depend on the thread count.
+constexpr std::size_t kChunkSize = 1024;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+using Polygon = std::vector<RvdVertex>;
+
+// Per-thread scratch: polygon buffers, the cell queue, and a visit stamp per seed (the stamp of
+// a seed equals the current triangle's when it was already queued for it).
+struct Scratch {
+  Polygon polygon, clipped;
+  std::vector<char> inside;  // per polygon vertex: on the cell's side of the current bisector
+  std::deque<Index> queue;
+  std::vector<std::size_t> stamp;
+  predicates::PredicateCounters counters;
+  std::size_t polygons = 0;
+};
+
+}  // namespace
+
+struct RestrictedVoronoiDiagram::Impl {
+  const TriangleMesh* surface;
+  std::vector<Vec3> seeds;
+  SeedNeighbors neighbors;
+  std::unique_ptr<NearestSeed> nearest;
+  RvdBuildTimes times;
+
+  // Clips `polygon` (in the frame's cell) by the bisector with seed j. Returns whether the
+  // bisector cut it, i.e. some vertex lies on j's side.
+  bool clip(const predicates::ClipFrame& frame, Index j, Scratch& s) const {
+    const Polygon& in = s.polygon;
+    const std::size_t n = in.size();
+    s.inside.resize(n);
+    bool all_inside = true;
+    for (std::size_t k = 0; k < n; ++k) {
+      s.inside[k] = predicates::closer_to_cell(frame, in[k], j, s.counters);
+      all_inside &= s.inside[k] != 0;
+    }
+    if (all_inside) return false;
+    Polygon& out = s.clipped;
+    out.clear();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t next = (k + 1) % n;
+      if (s.inside[k]) out.push_back(in[k]);
+      if (s.inside[k] != s.inside[next])
+        out.push_back(predicates::bisector_crossing(frame, in[k], in[next], j));
+    }
+    std::swap(s.polygon, s.clipped);
+    return true;
+  }
+
+  // Largest distance from the cell's seed to the polygon, rounded up past every vertex's error.
+  double reach(const Vec3& seed, const Polygon& polygon) const {
+    double r2 = 0;
+    for (const RvdVertex& v : polygon) {
+      const double r = norm(v.point - seed) + std::sqrt(3.0) * v.error;
+      r2 = std::max(r2, r * r);
+    }
+    return r2 * (1 + 1e-10);
+  }
+
+  void clip_triangle(std::size_t t, std::size_t chunk, std::span<PolygonSink* const> sinks,
+                     Scratch& s) const {
+    predicates::ClipFrame frame{surface->corners(t), seeds.data(), 0};
+    const Vec3 centroid = (1.0 / 3) * (frame.corners[0] + frame.corners[1] + frame.corners[2]);
+    const Index start = (*nearest)(centroid);
+    const std::size_t stamp = t + 1;
+    s.stamp[start] = stamp;
+    s.queue.assign(1, start);
+    while (!s.queue.empty()) {
+      const Index i = s.queue.front();
+      s.queue.pop_front();
+      frame.cell = i;
+      s.polygon.clear();
+      for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
+      double reach2 = reach(seeds[i], s.polygon);
+      for (Index j : neighbors.of(i)) {
+        // A bisector farther than twice the polygon's reach cannot cut it, and neighbours are
+        // sorted by distance: the rest cannot either. Rigorous: reach2 is rounded up.
+        const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
+        if (d2 * (1 - 1e-10) > 4 * reach2) break;
+        if (!clip(frame, j, s)) continue;
+        if (s.stamp[j] != stamp) {
+          s.stamp[j] = stamp;
+          s.queue.push_back(j);
+        }
+        if (s.polygon.empty()) break;
+        reach2 = reach(seeds[i], s.polygon);
+      }
+      if (s.polygon.size() < 3) continue;
+      ++s.polygons;
+      const RvdPolygon polygon{i, static_cast<Index>(t), s.polygon};
+      for (PolygonSink* sink : sinks) sink->polygon(chunk, polygon);
+    }
+  }
+};
+
+RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
+                                                   std::vector<Vec3> seeds)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->surface = &surface;
+  impl_->seeds = std::move(seeds);
+  auto start = std::chrono::steady_clock::now();
+  impl_->neighbors = delaunay_neighbors(impl_->seeds);
+  impl_->times.delaunay_seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  impl_->nearest = std::make_unique<NearestSeed>(impl_->seeds);
+  impl_->times.kdtree_seconds = seconds_since(start);
+}
+
+RestrictedVoronoiDiagram::~RestrictedVoronoiDiagram() = default;
+RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(RestrictedVoronoiDiagram&&) noexcept = default;
+RestrictedVoronoiDiagram& RestrictedVoronoiDiagram::operator=(RestrictedVoronoiDiagram&&) noexcept =
+    default;
+
+const TriangleMesh& RestrictedVoronoiDiagram::surface() const {
+  return *impl_->surface;
+}
+const std::vector<Vec3>& RestrictedVoronoiDiagram::seeds() const {
+  return impl_->seeds;
+}
+std::span<const Index> RestrictedVoronoiDiagram::neighbors(Index seed) const {
+  return impl_->neighbors.of(seed);
+}
+const RvdBuildTimes& RestrictedVoronoiDiagram::build_times() const {
+  return impl_->times;
+}
+
+TraversalStats RestrictedVoronoiDiagram::traverse(PolygonSink& sink) const {
+  PolygonSink* sinks[] = {&sink};
+  return traverse(sinks);
+}
+
+TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> sinks) const {
+  const std::size_t triangles = impl_->surface->triangles.size();
+  const std::size_t chunks = (triangles + kChunkSize - 1) / kChunkSize;
+  for (PolygonSink* sink : sinks) sink->begin(chunks);
+  tbb::enumerable_thread_specific<Scratch> scratch([&] {
+    Scratch s;
+    s.stamp.assign(impl_->seeds.size(), 0);
+    return s;
+  });
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
+    Scratch& s = scratch.local();
+    const std::size_t end = std::min(triangles, (chunk + 1) * kChunkSize);
+    for (std::size_t t = chunk * kChunkSize; t < end; ++t) impl_->clip_triangle(t, chunk, sinks, s);
+  });
+  for (PolygonSink* sink : sinks) sink->end();
+  TraversalStats stats;
+  for (const Scratch& s : scratch) {
+    stats.polygons += s.polygons;
+    stats.predicates += s.counters.predicates;
+    stats.exact_fallbacks += s.counters.exact_fallbacks;
+    stats.perturbed_ties += s.counters.perturbed_ties;
+  }
+  return stats;
+}
+
+}  // namespace cvtmesh

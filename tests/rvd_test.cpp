@@ -1,0 +1,373 @@
+// The exact RVD: it tiles the surface, matches a brute-force reference, survives degenerate
+// seed configurations, has the right gradient, yields a manifold RDT, and is deterministic.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/rvd.hpp"
+#include "cvtmesh/rvd_consumers.hpp"
+#include "cvtmesh/sampling.hpp"
+#include "cvtmesh/topology.hpp"
+#include "geometry/random.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+double polygon_area(std::span<const Vec3> p) {
+  Vec3 twice{};
+  for (std::size_t k = 1; k + 1 < p.size(); ++k) twice += cross(p[k] - p[0], p[k + 1] - p[0]);
+  return 0.5 * norm(twice);
+}
+
+// Area of every (seed, triangle) piece.
+class PieceAreas : public PolygonSink {
+ public:
+  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    std::vector<Vec3> points;
+    for (const RvdVertex& v : p.vertices) points.push_back(v.point);
+    chunks_[chunk].push_back({{p.seed, p.triangle}, polygon_area(points)});
+  }
+  void end() override {
+    for (const auto& c : chunks_)
+      for (const auto& [key, area] : c) {
+        EXPECT_FALSE(areas.count(key))
+            << "two polygons for seed " << key.first << ", triangle " << key.second;
+        areas[key] = area;
+      }
+  }
+  std::map<std::pair<Index, Index>, double> areas;
+
+ private:
+  std::vector<std::vector<std::pair<std::pair<Index, Index>, double>>> chunks_;
+};
+
+// Checks that neighbouring cells agree on the combinatorics: every polygon edge on bisector
+// (i, j) appears, reversed and with the same symbolic endpoints, in cell j's polygon of the same
+// triangle. Vertices are named globally: an input corner, (edge, cells i and j) for type B,
+// (cells i, j, k) for type C.
+class SharedEdges : public PolygonSink {
+ public:
+  using Key = std::array<std::int64_t, 5>;
+  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    const auto& v = p.vertices;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const RvdVertex &a = v[k], &b = v[(k + 1) % v.size()];
+      std::int32_t plane = -1;
+      for (std::int32_t s : a.symbols)
+        if (s >= 0 && (s == b.symbols[0] || s == b.symbols[1])) plane = s;
+      if (plane < 0) continue;  // on an input edge: not shared inside this triangle
+      chunks_[chunk].push_back(
+          {p.triangle, p.seed, static_cast<Index>(plane), name(p.seed, a), name(p.seed, b)});
+    }
+  }
+  void end() override {
+    std::map<std::tuple<Index, Index, Index, Key, Key>, int> edges;
+    for (const auto& c : chunks_)
+      for (const Edge& e : c) ++edges[{e.triangle, e.cell, e.other, e.from, e.to}];
+    for (const auto& [edge, count] : edges) {
+      const auto& [t, i, j, from, to] = edge;
+      EXPECT_EQ(count, 1) << "edge repeated in cell " << i;
+      EXPECT_TRUE(edges.count({t, j, i, to, from}))
+          << "triangle " << t << ": cell " << i << " has an edge on the bisector with " << j
+          << " that cell " << j << " does not have";
+      ++checked;
+    }
+  }
+  std::size_t checked = 0;
+
+ private:
+  struct Edge {
+    Index triangle, cell, other;
+    Key from, to;
+  };
+  static Key name(Index cell, const RvdVertex& v) {
+    constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+    std::array<std::int64_t, 3> cells{cell, kNone, kNone};
+    std::int64_t edge = -1;
+    int n = 1;
+    for (std::int32_t s : v.symbols) {
+      if (s >= 0)
+        cells[n++] = s;
+      else
+        edge = edge < 0 ? -s - 1 : edge * 3 + (-s - 1);
+    }
+    if (n == 1) return {0, edge, 0, 0, 0};  // corner: named by its two edges, in order
+    std::sort(cells.begin(), cells.end());
+    return {n - 1, edge, cells[0], cells[1], cells[2]};
+  }
+  std::vector<std::vector<Edge>> chunks_;
+};
+
+// Every triangle is covered exactly once: its pieces add up to its area, all pieces add up to
+// the surface area (relative tolerance `tol`), and neighbouring cells agree (SharedEdges).
+TraversalStats expect_tiling(const TriangleMesh& mesh, const std::vector<Vec3>& seeds,
+                             double tol = 1e-12) {
+  const RestrictedVoronoiDiagram rvd(mesh, seeds);
+  PieceAreas pieces;
+  CellIntegrator integrator(rvd);
+  SharedEdges shared;
+  PolygonSink* sinks[] = {&pieces, &integrator, &shared};
+  const TraversalStats stats = rvd.traverse(sinks);
+  std::vector<double> per_triangle(mesh.triangles.size(), 0);
+  for (const auto& [key, area] : pieces.areas) per_triangle[key.second] += area;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const double area = triangle_area(a, b, c);
+    EXPECT_NEAR(per_triangle[t], area, tol * area + 1e-300) << "triangle " << t;
+  }
+  const double total = surface_area(mesh);
+  EXPECT_NEAR(integrator.result().total_mass, total, tol * total);
+  return stats;
+}
+
+TEST(Rvd, CellsTileGeneratedSurfaces) {
+  for (const TriangleMesh& m : {icosphere(3), torus(2, 0.5, 40, 20), cube(4), disk(6, 24)}) {
+    expect_tiling(m, sample_surface(m, 300, 7));
+  }
+}
+
+TEST(Rvd, CellsTileARandomTriangleSoup) {
+  TriangleMesh soup;
+  CounterRng rng(3, 0);
+  for (int t = 0; t < 300; ++t) {
+    for (int k = 0; k < 3; ++k)
+      soup.vertices.push_back({rng.uniform(), rng.uniform(), rng.uniform()});
+    const Index b = static_cast<Index>(3 * t);
+    soup.triangles.push_back({b, b + 1, b + 2});
+  }
+  expect_tiling(soup, sample_surface(soup, 200, 1), 1e-11);
+}
+
+// O(n·m) reference: each triangle clipped against each cell by every other seed's bisector,
+// in plain doubles (fine for random, non-degenerate seeds).
+std::map<std::pair<Index, Index>, double> brute_force(const TriangleMesh& mesh,
+                                                      const std::vector<Vec3>& seeds) {
+  std::map<std::pair<Index, Index>, double> areas;
+  for (Index t = 0; t < mesh.triangles.size(); ++t) {
+    for (Index i = 0; i < seeds.size(); ++i) {
+      const auto c = mesh.corners(t);
+      std::vector<Vec3> poly(c.begin(), c.end());
+      for (Index j = 0; j < seeds.size() && !poly.empty(); ++j) {
+        if (j == i) continue;
+        auto side = [&](const Vec3& p) {
+          return dot(seeds[j] - seeds[i], (p - seeds[i]) + (p - seeds[j]));
+        };
+        std::vector<Vec3> out;
+        for (std::size_t k = 0; k < poly.size(); ++k) {
+          const Vec3 &a = poly[k], &b = poly[(k + 1) % poly.size()];
+          const double sa = side(a), sb = side(b);
+          if (sa < 0) out.push_back(a);
+          if ((sa < 0) != (sb < 0)) out.push_back(a + (sa / (sa - sb)) * (b - a));
+        }
+        poly = out;
+      }
+      if (poly.size() >= 3) areas[{i, t}] = polygon_area(poly);
+    }
+  }
+  return areas;
+}
+
+TEST(Rvd, MatchesBruteForceReference) {
+  const TriangleMesh m = torus(1, 0.35, 16, 8);
+  const std::vector<Vec3> seeds = sample_surface(m, 60, 11);
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  PieceAreas pieces;
+  rvd.traverse(pieces);
+  const auto reference = brute_force(m, seeds);
+  const double scale = surface_area(m) / static_cast<double>(m.triangles.size());
+  for (const auto& [key, area] : reference) {
+    const auto it = pieces.areas.find(key);
+    if (it == pieces.areas.end()) {
+      EXPECT_LT(area, 1e-12 * scale)
+          << "missing piece of seed " << key.first << ", triangle " << key.second;
+      continue;
+    }
+    EXPECT_NEAR(it->second, area, 1e-12 * scale)
+        << "seed " << key.first << ", triangle " << key.second;
+  }
+  for (const auto& [key, area] : pieces.areas)
+    if (!reference.count(key)) {
+      EXPECT_LT(area, 1e-12 * scale) << "extra piece";
+    }
+  EXPECT_GT(pieces.areas.size(), m.triangles.size());
+}
+
+TEST(RvdDegenerate, SeedsOnARegularGridAtMeshVertices) {
+  const TriangleMesh m = cube(4);  // vertices on a grid; cube corners are cospherical
+  const TraversalStats stats = expect_tiling(m, m.vertices);
+  EXPECT_GT(stats.perturbed_ties, 0u);  // the perturbation, not luck, decided the ties
+}
+
+TEST(RvdDegenerate, SeedsExactlyOnMeshEdges) {
+  const TriangleMesh m = cube(4);
+  std::vector<Vec3> seeds;
+  for (const Triangle& t : m.triangles)
+    seeds.push_back(0.5 * (m.vertices[t[0]] + m.vertices[t[1]]));
+  std::sort(seeds.begin(), seeds.end(), [](const Vec3& a, const Vec3& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  });
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  EXPECT_GT(expect_tiling(m, seeds).perturbed_ties, 0u);
+}
+
+TEST(RvdDegenerate, CosphericalSeeds) {
+  // The 12 icosahedron vertices (cospherical) and the 8 cube corners, on a sphere and a cube.
+  expect_tiling(icosphere(2), icosphere(0).vertices);
+  expect_tiling(icosphere(2), cube(1).vertices);
+  EXPECT_GT(expect_tiling(cube(3), cube(1).vertices).perturbed_ties, 0u);
+}
+
+TEST(RvdDegenerate, AllSeedsCoplanar) {
+  const TriangleMesh flat = disk(5, 16);
+  expect_tiling(flat, sample_surface(flat, 50, 3));  // in the surface's own plane
+  std::vector<Vec3> ring;
+  for (int k = 0; k < 10; ++k) ring.push_back({std::cos(k * 0.6), std::sin(k * 0.6), 0});
+  expect_tiling(icosphere(3), ring);  // cospherical and coplanar at once
+}
+
+TEST(RvdDegenerate, SingleSeedOwnsTheWholeSurface) {
+  const TriangleMesh m = torus(1, 0.3, 12, 6);
+  const RestrictedVoronoiDiagram rvd(m, {{0.1, 0.2, 0.3}});
+  CellIntegrator integrator(rvd);
+  rvd.traverse(integrator);
+  EXPECT_NEAR(integrator.result().mass[0], surface_area(m), 1e-12 * surface_area(m));
+}
+
+TEST(RvdDegenerate, FarMoreSeedsThanTriangles) {
+  const TriangleMesh m = icosphere(1);  // 80 triangles
+  expect_tiling(m, sample_surface(m, 8000, 5), 1e-11);
+}
+
+TEST(RvdDegenerate, DuplicateSeedsAreRejectedWithTheirIndices) {
+  const TriangleMesh m = icosphere(1);
+  std::vector<Vec3> seeds = sample_surface(m, 10, 1);
+  seeds.push_back(seeds[3]);
+  try {
+    RestrictedVoronoiDiagram rvd(m, seeds);
+    FAIL() << "duplicate seeds accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("seeds 3 and 10"), std::string::npos) << e.what();
+  }
+}
+
+double energy(const TriangleMesh& m, const std::vector<Vec3>& seeds) {
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  CellIntegrator integrator(rvd);
+  rvd.traverse(integrator);
+  return integrator.result().total_energy;
+}
+
+TEST(RvdIntegrals, GradientMatchesFiniteDifferences) {
+  const TriangleMesh m = icosphere(3);
+  const std::vector<Vec3> seeds = sample_surface(m, 40, 2);
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  CellIntegrator integrator(rvd);
+  rvd.traverse(integrator);
+  const std::vector<Vec3> gradient = integrator.result().gradient(seeds);
+  const double h = 1e-6;
+  for (Index s : {0u, 7u, 23u}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<Vec3> plus = seeds, minus = seeds;
+      double* p = axis == 0 ? &plus[s].x : axis == 1 ? &plus[s].y : &plus[s].z;
+      double* q = axis == 0 ? &minus[s].x : axis == 1 ? &minus[s].y : &minus[s].z;
+      *p += h, *q -= h;
+      const double numeric = (energy(m, plus) - energy(m, minus)) / (2 * h);
+      EXPECT_NEAR(gradient[s][axis], numeric, 1e-5 * norm(gradient[s]) + 1e-9)
+          << "seed " << s << " axis " << axis;
+    }
+  }
+}
+
+TEST(RvdIntegrals, LinearDensityMatchesClosedForm) {
+  // ρ = 1 + z on the flat unit disk... is 1 everywhere (z = 0); use ρ = 1 + x instead:
+  // ∫ρ = area (x is odd), ∫ρ x = ∫x² = π/4 for the unit disk (up to its polygonal boundary).
+  const TriangleMesh m = disk(30, 120);
+  std::vector<double> density;
+  for (const Vec3& v : m.vertices) density.push_back(1 + 0.5 * v.x);
+  const RestrictedVoronoiDiagram rvd(m, {{0, 0, 0}});
+  CellIntegrator integrator(rvd, density);
+  rvd.traverse(integrator);
+  const CellIntegrals& r = integrator.result();
+  EXPECT_NEAR(r.mass[0], surface_area(m), 1e-12);
+  // Exact over the polygonal disk: Σ over triangles of ∫x ρ with ρ linear = 0.5·∫x² exactly.
+  double x2 = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto [a, b, c] = m.corners(t);
+    x2 += triangle_area(a, b, c) / 6 *
+          (a.x * a.x + b.x * b.x + c.x * c.x + a.x * b.x + b.x * c.x + c.x * a.x);
+  }
+  EXPECT_NEAR(r.moment[0].x, 0.5 * x2, 1e-12);
+  EXPECT_NEAR(r.moment[0].y, 0.0, 1e-12);
+}
+
+// A few Lloyd steps (seeds to their restricted centroids) spread random seeds evenly.
+std::vector<Vec3> lloyd(const TriangleMesh& m, std::vector<Vec3> seeds, int steps) {
+  for (int k = 0; k < steps; ++k) {
+    const RestrictedVoronoiDiagram rvd(m, seeds);
+    CellIntegrator integrator(rvd);
+    rvd.traverse(integrator);
+    for (Index s = 0; s < seeds.size(); ++s)
+      if (integrator.result().mass[s] > 0) seeds[s] = integrator.result().centroid(s);
+  }
+  return seeds;
+}
+
+void expect_manifold_rdt(const TriangleMesh& m, std::size_t n) {
+  const std::vector<Vec3> seeds = lloyd(m, sample_surface(m, n, 4), 10);
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  RestrictedDelaunayBuilder rdt(rvd);
+  rvd.traverse(rdt);
+  const TopologyReport t = analyze_topology(rdt.result());
+  const TopologyReport input = analyze_topology(m);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_EQ(t.euler_characteristic, input.euler_characteristic);
+  EXPECT_EQ(t.vertices, n);
+}
+
+TEST(RestrictedDelaunay, WellSampledSphereIsAClosedManifoldOfTheSameTopology) {
+  expect_manifold_rdt(icosphere(4), 1000);
+}
+
+TEST(RestrictedDelaunay, WellSampledTorusIsAClosedManifoldOfTheSameTopology) {
+  expect_manifold_rdt(torus(1, 0.4, 80, 32), 1500);
+}
+
+TEST(Rvd, ResultsDoNotDependOnThreadCount) {
+  const TriangleMesh m = torus(1, 0.4, 120, 48);  // 11,520 triangles: many chunks
+  const std::vector<Vec3> seeds = sample_surface(m, 2000, 9);
+  auto run = [&] {
+    const RestrictedVoronoiDiagram rvd(m, seeds);
+    CellIntegrator integrator(rvd);
+    RestrictedDelaunayBuilder rdt(rvd);
+    PolygonSink* sinks[] = {&integrator, &rdt};
+    rvd.traverse(sinks);
+    return std::pair(integrator.result(), rdt.result());
+  };
+  std::pair<CellIntegrals, TriangleMesh> one;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = run();
+  }
+  const auto all = run();
+  EXPECT_EQ(one.first.mass, all.first.mass);
+  EXPECT_EQ(one.first.energy, all.first.energy);
+  EXPECT_EQ(one.first.total_energy, all.first.total_energy);
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+    ASSERT_EQ(one.first.moment[s], all.first.moment[s]);
+  EXPECT_EQ(one.second.triangles, all.second.triangles);
+}
+
+}  // namespace
+}  // namespace cvtmesh
