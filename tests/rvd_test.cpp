@@ -148,6 +148,18 @@ TEST(Rvd, CellsTileARandomTriangleSoup) {
   expect_tiling(soup, sample_surface(soup, 200, 1), 1e-11);
 }
 
+TEST(Rvd, ZeroAreaTrianglesAreSkipped) {
+  TriangleMesh m = icosphere(2);
+  const Index v = static_cast<Index>(m.vertices.size());
+  m.vertices.push_back({0.25, 0.5, 0.75});
+  m.vertices.push_back({0.5, 1.0, 1.5});
+  m.triangles.push_back({0, 0, 1});      // repeated corner
+  m.triangles.push_back({v, v + 1, 2});  // not collinear: kept
+  m.vertices.push_back({1.0, 2.0, 3.0});
+  m.triangles.push_back({v, v + 1, v + 2});  // exactly collinear
+  expect_tiling(m, sample_surface(m, 100, 2));
+}
+
 // O(n·m) reference: each triangle clipped against each cell by every other seed's bisector,
 // in plain doubles (fine for random, non-degenerate seeds).
 std::map<std::pair<Index, Index>, double> brute_force(const TriangleMesh& mesh,

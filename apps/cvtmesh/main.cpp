@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   Action run;
   add_quality_command(app, run);
   add_repair_command(app, run);
+  add_rvd_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -69,7 +69,8 @@ class RestrictedVoronoiDiagram {
   RestrictedVoronoiDiagram(RestrictedVoronoiDiagram&&) noexcept;
   RestrictedVoronoiDiagram& operator=(RestrictedVoronoiDiagram&&) noexcept;
 
-  // Clips every triangle and hands each non-empty polygon to each sink, in one pass.
+  // Clips every triangle and hands each non-empty polygon to each sink, in one pass. Triangles
+  // of zero area (exactly collinear corners) have no polygons.
   TraversalStats traverse(std::span<PolygonSink* const> sinks) const;
   TraversalStats traverse(PolygonSink& sink) const;
 

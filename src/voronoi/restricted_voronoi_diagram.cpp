@@ -1,6 +1,7 @@
 // The RVD traversal (paper §3.1-3.3): per input triangle, a FIFO queue of cells starting from
 // the seed nearest to the centroid; each cell clips the triangle by its bisectors, and a
 // neighbour whose bisector actually cut the polygon joins the queue.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -45,6 +46,7 @@ struct RestrictedVoronoiDiagram::Impl {
   std::vector<Vec3> seeds;
   SeedNeighbors neighbors;
   std::unique_ptr<NearestSeed> nearest;
+  std::vector<bool> flat;  // zero-area triangles (exact test): no facet plane, nothing to clip
   RvdBuildTimes times;
 
   // Clips `polygon` (in the frame's cell) by the bisector with seed j. Returns whether the
@@ -122,6 +124,13 @@ RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
     : impl_(std::make_unique<Impl>()) {
   impl_->surface = &surface;
   impl_->seeds = std::move(seeds);
+  impl_->flat.resize(surface.triangles.size());
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    const auto [a, b, c] = surface.corners(t);
+    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+    impl_->flat[t] =
+        CGAL::collinear(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z));
+  }
   auto start = std::chrono::steady_clock::now();
   impl_->neighbors = delaunay_neighbors(impl_->seeds);
   impl_->times.delaunay_seconds = seconds_since(start);
@@ -165,7 +174,8 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
     const std::size_t end = std::min(triangles, (chunk + 1) * kChunkSize);
-    for (std::size_t t = chunk * kChunkSize; t < end; ++t) impl_->clip_triangle(t, chunk, sinks, s);
+    for (std::size_t t = chunk * kChunkSize; t < end; ++t)
+      if (!impl_->flat[t]) impl_->clip_triangle(t, chunk, sinks, s);
   });
   for (PolygonSink* sink : sinks) sink->end();
   TraversalStats stats;
