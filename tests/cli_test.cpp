@@ -239,3 +239,92 @@ TEST(Cli, ThreadCountDoesNotChangeTheReport) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+TEST(CliRvd, JsonReportTilesTheSurface) {
+  TempDir dir;
+  write_mesh(dir / "torus.off", torus(1, 0.4, 48, 24));
+  const CliRun r = run_cli(dir, "rvd --json --seeds 500 " + quoted(dir / "torus.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"seeds", "triangles", "polygons", "surface_area", "cells_area_sum",
+                          "energy", "exact_fallbacks", "threads", "timings"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"sampling", "kdtree", "delaunay", "rvd", "total"})
+    EXPECT_TRUE(j["timings"].contains(key)) << key;
+  EXPECT_EQ(j["seeds"], 500);
+  EXPECT_EQ(j["triangles"], 2304);
+  EXPECT_NEAR(j["cells_area_sum"].get<double>(), j["surface_area"].get<double>(),
+              1e-12 * j["surface_area"].get<double>());
+  EXPECT_GT(j["polygons"].get<int>(), 2304);
+}
+
+TEST(CliRvd, SameEnergyOnAnyThreadCountAndForTheSameSeed) {
+  TempDir dir;
+  write_mesh(dir / "sphere.ply", icosphere(4));
+  const std::string args = "rvd --json --seeds 800 --seed 3 " + quoted(dir / "sphere.ply");
+  const auto one = nlohmann::json::parse(run_cli(dir, args + " --threads 1").out);
+  const auto all = nlohmann::json::parse(run_cli(dir, args).out);
+  EXPECT_EQ(one["energy"], all["energy"]);
+  EXPECT_EQ(one["polygons"], all["polygons"]);
+  const auto other = nlohmann::json::parse(
+      run_cli(dir, "rvd --json --seeds 800 --seed 4 " + quoted(dir / "sphere.ply")).out);
+  EXPECT_NE(one["energy"], other["energy"]);
+}
+
+TEST(CliRvd, WritesCellsAndRestrictedDelaunayTriangulation) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(4));
+  const CliRun r =
+      run_cli(dir, "rvd --seeds 300 " + quoted(dir / "sphere.off") + " --cells " +
+                       quoted(dir / "cells.ply") + " --rdt " + quoted(dir / "rdt.obj"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const TriangleMesh cells = read_mesh(dir / "cells.ply");
+  EXPECT_GT(cells.triangles.size(), 0u);
+  const TriangleMesh rdt = read_mesh(dir / "rdt.obj");
+  EXPECT_LE(rdt.vertices.size(), 300u);
+  EXPECT_GT(rdt.triangles.size(), 500u);
+}
+
+TEST(CliRvd, SeedsFromATextFileOrAMesh) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(3));
+  write_file(dir / "seeds.txt", "# x y z\n1 0 0\n0 1 0\n\n0 0 1\n-1 0 0\n");
+  CliRun r = run_cli(dir, "rvd --json " + quoted(dir / "sphere.off") + " --seeds-file " +
+                              quoted(dir / "seeds.txt"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["seeds"], 4);
+  write_mesh(dir / "seeds.obj", icosphere(1));
+  r = run_cli(dir, "rvd --json " + quoted(dir / "sphere.off") + " --seeds-file " +
+                       quoted(dir / "seeds.obj"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["seeds"], 42);
+}
+
+TEST(CliRvd, BadSeedsGetClearErrors) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(2));
+  write_file(dir / "bad.txt", "1 0 0\n0 1\n");
+  CliRun r = run_cli(
+      dir, "rvd " + quoted(dir / "sphere.off") + " --seeds-file " + quoted(dir / "bad.txt"));
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("line 2"), std::string::npos) << r.err;
+  write_file(dir / "dup.txt", "1 0 0\n0 1 0\n1 0 0\n");
+  r = run_cli(dir,
+              "rvd " + quoted(dir / "sphere.off") + " --seeds-file " + quoted(dir / "dup.txt"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("seeds 0 and 2 are identical"), std::string::npos) << r.err;
+  EXPECT_EQ(run_cli(dir, "rvd " + quoted(dir / "sphere.off")).code, 2);  // no seeds given
+  EXPECT_EQ(run_cli(dir, "rvd " + quoted(dir / "sphere.off") + " --seeds 0").code, 2);
+  r = run_cli(
+      dir, "rvd " + quoted(dir / "sphere.off") + " --seeds 10 --rdt " + quoted(dir / "sphere.off"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("refusing to write over the input"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace cvtmesh

@@ -8,6 +8,9 @@
 #include <sstream>
 
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/rvd.hpp"
+#include "cvtmesh/rvd_consumers.hpp"
+#include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
 #include "support/temp_dir.hpp"
 
@@ -90,6 +93,24 @@ TEST(SharedData, EveryMeshMatchesTheCountsOfItsReadme) {
     EXPECT_EQ(static_cast<long long>(t.components), e.components);
     EXPECT_EQ(static_cast<long long>(t.nonmanifold_edges), e.nonmanifold_edges);
   }
+}
+
+TEST(SharedData, RvdCellsTileEveryMesh) {
+  const auto dir = shared_data();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "shared test meshes not found at " << dir;
+  std::size_t meshes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (!format_from_extension(entry.path())) continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    const TriangleMesh mesh = read_mesh(entry.path());
+    const RestrictedVoronoiDiagram rvd(mesh, sample_surface(mesh, 2000, 1));
+    CellIntegrator integrator(rvd);
+    rvd.traverse(integrator);
+    const double area = surface_area(mesh);
+    EXPECT_NEAR(integrator.result().total_mass, area, 1e-12 * area);
+    ++meshes;
+  }
+  EXPECT_GT(meshes, 0u);
 }
 
 }  // namespace
