@@ -334,6 +334,16 @@ std::vector<Vec3> lloyd(const TriangleMesh& m, std::vector<Vec3> seeds, int step
   return seeds;
 }
 
+// Six times the signed volume enclosed: positive for outward-facing triangles.
+double signed_volume(const TriangleMesh& m) {
+  double v = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto [a, b, c] = m.corners(t);
+    v += dot(a, cross(b, c));
+  }
+  return v;
+}
+
 void expect_manifold_rdt(const TriangleMesh& m, std::size_t n) {
   const std::vector<Vec3> seeds = lloyd(m, sample_surface(m, n, 4), 10);
   const RestrictedVoronoiDiagram rvd(m, seeds);
@@ -346,6 +356,14 @@ void expect_manifold_rdt(const TriangleMesh& m, std::size_t n) {
   EXPECT_TRUE(t.consistently_oriented);
   EXPECT_EQ(t.euler_characteristic, input.euler_characteristic);
   EXPECT_EQ(t.vertices, n);
+  EXPECT_GT(signed_volume(m) * signed_volume(rdt.result()), 0);  // oriented like the input
+  TriangleMesh flipped = m;
+  for (Triangle& f : flipped.triangles) std::swap(f[1], f[2]);
+  const RestrictedVoronoiDiagram flipped_rvd(flipped, seeds);
+  RestrictedDelaunayBuilder flipped_rdt(flipped_rvd);
+  flipped_rvd.traverse(flipped_rdt);
+  EXPECT_LT(signed_volume(flipped) * signed_volume(rdt.result()), 0);
+  EXPECT_GT(signed_volume(flipped) * signed_volume(flipped_rdt.result()), 0);
 }
 
 TEST(RestrictedDelaunay, WellSampledSphereIsAClosedManifoldOfTheSameTopology) {

@@ -1,0 +1,108 @@
+// RVD benchmarks (issue targets, paper §5 timing plot): RVD time against the Delaunay time of
+// the same seeds, measured in the same process so the ratio survives a noisy machine.
+//   BM_RvdVsDelaunay/N: icosphere level 4 (5,120 faces), N random seeds; counters delaunay_s,
+//     rvd_s (one traversal with integrals) and rvd_over_delaunay.
+//   BM_RvdLargeMesh/T: ../shared/data/igea.ply (268,686 faces), 10k seeds, T threads; counter
+//     rvd_s, and exact_fallback_pct of the predicates.
+//   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
+//     compares to random seeds on the same mesh (exact_fallback_pct, ties).
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+
+#include "cvtmesh/io.hpp"
+#include "cvtmesh/rvd.hpp"
+#include "cvtmesh/rvd_consumers.hpp"
+#include "cvtmesh/sampling.hpp"
+#include "support/shapes.hpp"
+
+namespace {
+
+using namespace cvtmesh;
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+struct Pass {
+  double delaunay_s, rvd_s;
+  TraversalStats stats;
+};
+
+Pass rvd_pass(const TriangleMesh& mesh, const std::vector<Vec3>& seeds) {
+  const RestrictedVoronoiDiagram rvd(mesh, seeds);
+  CellIntegrator integrator(rvd);
+  const auto start = Clock::now();
+  const TraversalStats stats = rvd.traverse(integrator);
+  const double rvd_s = seconds(start);
+  benchmark::DoNotOptimize(integrator.result().total_energy);
+  return {rvd.build_times().delaunay_seconds, rvd_s, stats};
+}
+
+void report(benchmark::State& state, const Pass& p) {
+  state.SetIterationTime(p.delaunay_s + p.rvd_s);
+  state.counters["delaunay_s"] = p.delaunay_s;
+  state.counters["rvd_s"] = p.rvd_s;
+  state.counters["rvd_over_delaunay"] = p.rvd_s / p.delaunay_s;
+  state.counters["exact_fallback_pct"] = 100.0 * static_cast<double>(p.stats.exact_fallbacks) /
+                                         static_cast<double>(p.stats.predicates);
+  state.counters["ties"] = static_cast<double>(p.stats.perturbed_ties);
+}
+
+void BM_RvdVsDelaunay(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(4);
+  const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
+  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+}
+BENCHMARK(BM_RvdVsDelaunay)
+    ->Arg(1'000)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+std::filesystem::path shared_mesh(const char* name) {
+  const char* env = std::getenv("CVTMESH_SHARED_DATA");
+  return std::filesystem::path(env ? env : CVTMESH_SHARED_DATA) / name;
+}
+
+void BM_RvdLargeMesh(benchmark::State& state) {
+  const auto path = shared_mesh("igea.ply");
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("igea.ply not found (set CVTMESH_SHARED_DATA)");
+    return;
+  }
+  const TriangleMesh mesh = read_mesh(path);
+  const auto seeds = sample_surface(mesh, 10'000, 1);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+}
+BENCHMARK(BM_RvdLargeMesh)
+    ->Arg(1)
+    ->Arg(2)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+void BM_RvdDegenerate(benchmark::State& state) {
+  const TriangleMesh mesh = testing::cube(40);  // 19,200 faces, 9,602 grid vertices
+  const bool grid = state.range(0) == 1;
+  const auto seeds = grid ? mesh.vertices : sample_surface(mesh, mesh.vertices.size(), 1);
+  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+  state.SetLabel(grid ? "seeds on grid vertices" : "random seeds");
+}
+BENCHMARK(BM_RvdDegenerate)
+    ->Arg(0)
+    ->Arg(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+}  // namespace
