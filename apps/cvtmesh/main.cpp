@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   add_quality_command(app, run);
   add_repair_command(app, run);
   add_rvd_command(app, run);
+  add_remesh_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,57 @@
+// Isotropic remeshing by CVT (paper §4): seeds are spread on the surface, moved to minimise the
+// CVT energy over the exact RVD (L-BFGS, or Lloyd), first freely in 3D (restricted CVT), then
+// constrained on the surface (constrained CVT); the output is their restricted Delaunay
+// triangulation.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+enum class Optimizer { lbfgs, lloyd };
+enum class CvtMode { rcvt, ccvt, both };
+
+struct RemeshProgress {
+  const char* phase;  // "rcvt" or "ccvt"
+  int iteration;
+  double energy, gradient_norm, elapsed_seconds;
+};
+
+struct RemeshSettings {
+  // Output size: exactly one of these three must be set.
+  std::size_t vertices = 0;          // number of output vertices
+  double edge_length = 0;            // target edge length, in the mesh's units
+  double edge_length_rel = 0;        // target edge length, as a fraction of the bbox diagonal
+  int iterations = 40;               // cap on the iterations of each phase
+  double gradient_tolerance = 1e-3;  // stop a phase when ‖∇F‖ falls below this × its start
+  Optimizer optimizer = Optimizer::lbfgs;
+  CvtMode mode = CvtMode::both;     // both: RCVT, then CCVT (paper §4.2)
+  std::uint64_t seed = 1;           // random initial seeds: same seed, same output
+  std::vector<Vec3> initial_seeds;  // if not empty: used instead of random seeds
+  std::function<void(const RemeshProgress&)> progress;  // called once per iteration
+};
+
+struct RemeshResult {
+  TriangleMesh mesh;        // the restricted Delaunay triangulation of the final seeds
+  int iterations = 0;       // over all phases
+  int rvd_evaluations = 0;  // RVD computations (energy + gradient evaluations)
+  double energy_initial = 0, energy_final = 0;
+  double gradient_norm_initial = 0, gradient_norm_final = 0;
+  double seconds_initialization = 0, seconds_rcvt = 0, seconds_ccvt = 0, seconds_extraction = 0;
+  std::vector<double> energies;  // energy after each accepted iteration, in order
+};
+
+// The number of vertices the settings ask for: `vertices`, or the count whose equilateral
+// triangles of the given edge length cover the surface's area. Throws InvalidArgument when not
+// exactly one size is set, or it is out of range (fewer than 4 vertices, more than 50 million).
+std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& settings);
+
+// Throws InvalidArgument for bad settings, InputError for a mesh without area.
+RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings);
+
+}  // namespace cvtmesh

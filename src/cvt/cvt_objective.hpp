@@ -1,0 +1,38 @@
+// The CVT energy F and its gradient as a function of the seeds (paper eq. 3 and 5), one RVD
+// per evaluation. Restricted CVT: seeds free in 3D. Constrained CVT: F is evaluated at the
+// seeds' nearest surface points and the gradient projected on the tangent planes there (eq. 7).
+#pragma once
+
+#include <vector>
+
+#include "cvt/surface_projector.hpp"
+#include "cvtmesh/rvd_consumers.hpp"
+
+namespace cvtmesh {
+
+class CvtObjective {
+ public:
+  CvtObjective(const TriangleMesh& surface, const SurfaceProjector& projector, bool constrained)
+      : surface_(surface), projector_(projector), constrained_(constrained) {}
+
+  struct Evaluation {
+    double energy;
+    std::vector<Vec3> gradient;
+    std::vector<Vec3> centroids;  // restricted centroids (the seed itself where its cell is empty)
+  };
+  // `seeds` are replaced by the points actually evaluated (projected, when constrained).
+  Evaluation operator()(std::vector<Vec3>& seeds);
+  int evaluations() const { return evaluations_; }
+
+  // Moves each seed to its nearest surface point. A seed that would land on a point another seed
+  // already occupies (possible at convex corners) stays where it is, so seeds stay distinct.
+  void project(std::vector<Vec3>& seeds) const;
+
+ private:
+  const TriangleMesh& surface_;
+  const SurfaceProjector& projector_;
+  bool constrained_;
+  int evaluations_ = 0;
+};
+
+}  // namespace cvtmesh

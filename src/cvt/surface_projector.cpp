@@ -1,0 +1,49 @@
+#include "cvt/surface_projector.hpp"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+
+namespace cvtmesh {
+
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Triangles = std::vector<Kernel::Triangle_3>;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
+using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+}  // namespace
+
+struct SurfaceProjector::Tree {
+  Triangles triangles;
+  std::vector<Vec3> normals;
+  AabbTree tree;
+};
+
+SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    const auto [a, b, c] = surface.corners(t);
+    const Vec3 n = cross(b - a, c - a);
+    const double length = norm(n);
+    if (length == 0) continue;  // no nearest point lies only on a degenerate triangle
+    tree_->triangles.emplace_back(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z),
+                                  Kernel::Point_3(c.x, c.y, c.z));
+    tree_->normals.push_back((1 / length) * n);
+  }
+  tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
+  tree_->tree.build();
+  tree_->tree.accelerate_distance_queries();
+}
+
+SurfaceProjector::~SurfaceProjector() = default;
+
+SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p) const {
+  const auto [point, triangle] =
+      tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z));
+  const auto index = static_cast<std::size_t>(triangle - tree_->triangles.begin());
+  return {{point.x(), point.y(), point.z()}, tree_->normals[index]};
+}
+
+}  // namespace cvtmesh
