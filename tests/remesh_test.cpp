@@ -1,0 +1,105 @@
+// CVT remeshing: the energy goes down, L-BFGS beats Lloyd, smooth closed surfaces come out as
+// well-shaped closed manifolds of the same topology, deterministically, and bad settings fail.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/hausdorff.hpp"
+#include "cvtmesh/quality.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/topology.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+void expect_good_remesh(const TriangleMesh& input, std::size_t vertices) {
+  RemeshSettings s;
+  s.vertices = vertices;
+  const RemeshResult r = remesh(input, s);
+  const TopologyReport t = analyze_topology(r.mesh), in = analyze_topology(input);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_TRUE(same_topology(t, in));
+  EXPECT_NEAR(static_cast<double>(t.vertices), static_cast<double>(vertices), 0.01 * vertices);
+  const QualityReport q = measure_quality(r.mesh);
+  EXPECT_GE(q.angle_min_deg, 30.0);
+  EXPECT_GE(q.q_min, 0.6);
+  EXPECT_LT(q.pct_angle_below_30, 0.1);
+  EXPECT_LT(hausdorff_distance(r.mesh, input, {.samples = 50'000}).mean_pct(), 0.1);
+  EXPECT_LT(r.energy_final, r.energy_initial);
+}
+
+TEST(Remesh, SphereBecomesWellShapedAndKeepsItsTopology) {
+  expect_good_remesh(icosphere(5), 2000);
+}
+
+TEST(Remesh, TorusBecomesWellShapedAndKeepsItsTopology) {
+  expect_good_remesh(torus(1, 0.4, 160, 64), 2500);
+}
+
+TEST(Remesh, EnergyDecreasesAlongAcceptedLbfgsSteps) {
+  RemeshSettings s;
+  s.vertices = 800;
+  s.mode = CvtMode::rcvt;
+  const RemeshResult r = remesh(icosphere(4), s);
+  ASSERT_GT(r.energies.size(), 5u);
+  for (std::size_t k = 1; k < r.energies.size(); ++k) EXPECT_LE(r.energies[k], r.energies[k - 1]);
+}
+
+TEST(Remesh, LbfgsReachesAToleranceInFewerEvaluationsThanLloyd) {
+  RemeshSettings s;
+  s.vertices = 600;
+  s.mode = CvtMode::rcvt;
+  s.gradient_tolerance = 0.05;
+  s.iterations = 500;
+  const TriangleMesh m = icosphere(4);
+  const RemeshResult lbfgs = remesh(m, s);
+  s.optimizer = Optimizer::lloyd;
+  const RemeshResult lloyd = remesh(m, s);
+  EXPECT_LE(lbfgs.gradient_norm_final, 0.05 * lbfgs.gradient_norm_initial);
+  EXPECT_LE(lloyd.gradient_norm_final, 0.05 * lloyd.gradient_norm_initial);
+  EXPECT_LT(lbfgs.rvd_evaluations, lloyd.rvd_evaluations);
+}
+
+TEST(Remesh, SameOutputOnOneAndAllThreads) {
+  RemeshSettings s;
+  s.vertices = 500;
+  s.iterations = 10;
+  const TriangleMesh m = torus(1, 0.4, 60, 24);
+  RemeshResult one;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    one = remesh(m, s);
+  }
+  const RemeshResult all = remesh(m, s);
+  EXPECT_EQ(one.mesh.vertices, all.mesh.vertices);
+  EXPECT_EQ(one.mesh.triangles, all.mesh.triangles);
+  EXPECT_EQ(one.energies, all.energies);
+}
+
+TEST(Remesh, SizeSettingsAreValidated) {
+  const TriangleMesh m = icosphere(3);
+  RemeshSettings s;
+  EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);  // no size
+  s.vertices = 3;
+  EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);  // too few
+  s.vertices = 100'000'000;
+  EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);  // absurdly many
+  s.vertices = 0;
+  s.edge_length = -0.1;
+  EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);
+  s.edge_length = 1e-6;
+  EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);  // ≈ 10¹³ vertices
+  s.edge_length = 0.1;
+  const double expected = surface_area(m) / (std::sqrt(3.0) / 2 * 0.01);
+  EXPECT_NEAR(static_cast<double>(requested_vertex_count(m, s)), expected, 1.0);
+  s.edge_length_rel = 0.05;
+  EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);  // two sizes
+}
+
+}  // namespace
+}  // namespace cvtmesh
