@@ -328,3 +328,61 @@ TEST(CliRvd, BadSeedsGetClearErrors) {
 
 }  // namespace
 }  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(4));
+  const CliRun r = run_cli(dir, "remesh --json --quiet --vertices 400 --iterations 15 " +
+                                    quoted(dir / "sphere.off") + " " + quoted(dir / "out.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // --quiet
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : kRequiredKeys) EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct",
+                          "same_topology", "iterations", "rvd_evaluations", "energy_initial",
+                          "energy_final", "gradient_norm_final", "time_s", "timings"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["same_topology"], true);
+  EXPECT_LT(j["energy_final"].get<double>(), j["energy_initial"].get<double>());
+  EXPECT_EQ(read_mesh(dir / "out.ply").vertices.size(), j["vertices"].get<std::size_t>());
+}
+
+TEST(CliRemesh, ProgressGoesToStderr) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(3));
+  const CliRun r = run_cli(dir, "remesh --vertices 200 --iterations 3 " +
+                                    quoted(dir / "sphere.off") + " " + quoted(dir / "out.obj"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("rcvt    1  energy"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ccvt"), std::string::npos) << r.err;
+}
+
+TEST(CliRemesh, BadArgumentsGetClearErrors) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(3));
+  const std::string in = quoted(dir / "sphere.off"), out = quoted(dir / "out.off");
+  auto expect_error = [&](const std::string& args, int code, const std::string& message) {
+    const CliRun r = run_cli(dir, "remesh " + args);
+    EXPECT_EQ(r.code, code) << args;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
+  };
+  expect_error(in + " " + out, 2, "--vertices");                       // no size
+  expect_error(in + " " + out + " --vertices 3", 2, "at least 4");     // too few
+  expect_error(in + " " + out + " --vertices 900000000", 2, "limit");  // absurdly many
+  expect_error(in + " " + out + " --edge-length -0.5", 2, "positive");
+  expect_error(in + " " + out + " --vertices 10 --edge-length 0.1", 2, "excludes");
+  expect_error(in + " " + out + " --vertices 100 --optimizer newton", 2, "optimizer");
+  expect_error(quoted(dir / "missing.off") + " " + out + " --vertices 100", 3, "no such file");
+  expect_error(in + " " + in + " --vertices 100", 2, "refusing to write over the input");
+  expect_error(in + " " + quoted(dir / "out.xyz") + " --vertices 100", 2,
+               "unknown output extension");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
+}
+
+}  // namespace
+}  // namespace cvtmesh

@@ -6,9 +6,13 @@
 
 namespace cvtmesh {
 
-void CvtObjective::project(std::vector<Vec3>& seeds) const {
-  std::vector<Vec3> feet(seeds.size());
-  for (std::size_t s = 0; s < seeds.size(); ++s) feet[s] = projector_.nearest(seeds[s]).point;
+std::vector<Vec3> CvtObjective::project(std::vector<Vec3>& seeds) const {
+  std::vector<Vec3> feet(seeds.size()), normals(seeds.size());
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    const SurfaceProjector::Foot foot = projector_.nearest(seeds[s]);
+    feet[s] = foot.point;
+    normals[s] = foot.normal;
+  }
   std::vector<std::size_t> order(seeds.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   auto key = [&](std::size_t s) { return std::tie(feet[s].x, feet[s].y, feet[s].z); };
@@ -16,10 +20,11 @@ void CvtObjective::project(std::vector<Vec3>& seeds) const {
             [&](auto a, auto b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
   for (std::size_t k = 0; k < order.size(); ++k)
     if (k == 0 || !(feet[order[k]] == feet[order[k - 1]])) seeds[order[k]] = feet[order[k]];
+  return normals;
 }
 
 CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
-  if (constrained_) project(seeds);
+  const std::vector<Vec3> normals = constrained_ ? project(seeds) : std::vector<Vec3>{};
   ++evaluations_;
   const RestrictedVoronoiDiagram rvd(surface_, seeds);
   CellIntegrator integrator(rvd);
@@ -31,7 +36,7 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
     e.centroids[s] = integrals.mass[s] > 0 ? integrals.centroid(static_cast<Index>(s)) : seeds[s];
   if (constrained_) {
     for (std::size_t s = 0; s < seeds.size(); ++s) {
-      const Vec3 n = projector_.nearest(seeds[s]).normal;
+      const Vec3& n = normals[s];
       e.gradient[s] = e.gradient[s] - dot(e.gradient[s], n) * n;
     }
   }

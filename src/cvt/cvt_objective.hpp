@@ -24,9 +24,10 @@ class CvtObjective {
   Evaluation operator()(std::vector<Vec3>& seeds);
   int evaluations() const { return evaluations_; }
 
-  // Moves each seed to its nearest surface point. A seed that would land on a point another seed
-  // already occupies (possible at convex corners) stays where it is, so seeds stay distinct.
-  void project(std::vector<Vec3>& seeds) const;
+  // Moves each seed to its nearest surface point and returns the surface normals there. A seed
+  // that would land on a point another seed already occupies (possible at convex corners) stays
+  // where it is, so seeds stay distinct.
+  std::vector<Vec3> project(std::vector<Vec3>& seeds) const;
 
  private:
   const TriangleMesh& surface_;
