@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "cvt/surface_projector.hpp"
+#include "geometry/surface_projector.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 
 namespace cvtmesh {

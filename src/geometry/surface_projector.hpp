@@ -9,6 +9,7 @@ namespace cvtmesh {
 
 class SurfaceProjector {
  public:
+  // `surface` must have at least one triangle.
   explicit SurfaceProjector(const TriangleMesh& surface);
   ~SurfaceProjector();
   struct Foot {
@@ -17,6 +18,10 @@ class SurfaceProjector {
   };
   // Thread-safe after construction.
   Foot nearest(const Vec3& p) const;
+  double squared_distance(const Vec3& p) const {
+    const Vec3 d = nearest(p).point - p;
+    return dot(d, d);
+  }
 
  private:
   struct Tree;

@@ -1,4 +1,4 @@
-#include "cvt/surface_projector.hpp"
+#include "geometry/surface_projector.hpp"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -23,14 +23,19 @@ struct SurfaceProjector::Tree {
 };
 
 SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    const auto [a, b, c] = surface.corners(t);
-    const Vec3 n = cross(b - a, c - a);
-    const double length = norm(n);
-    if (length == 0) continue;  // no nearest point lies only on a degenerate triangle
-    tree_->triangles.emplace_back(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z),
-                                  Kernel::Point_3(c.x, c.y, c.z));
-    tree_->normals.push_back((1 / length) * n);
+  // Degenerate triangles hold no nearest point that a neighbour does not hold too; they are
+  // kept only when nothing else is left, with a zero normal.
+  for (const bool keep_degenerate : {false, true}) {
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+      const auto [a, b, c] = surface.corners(t);
+      const Vec3 n = cross(b - a, c - a);
+      const double length = norm(n);
+      if (length == 0 && !keep_degenerate) continue;
+      tree_->triangles.emplace_back(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z),
+                                    Kernel::Point_3(c.x, c.y, c.z));
+      tree_->normals.push_back(length > 0 ? (1 / length) * n : Vec3{});
+    }
+    if (!tree_->triangles.empty()) break;
   }
   tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
   tree_->tree.build();
