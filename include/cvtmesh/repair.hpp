@@ -28,6 +28,10 @@ struct RepairReport {
 // Deterministic; the kept elements keep their relative order.
 RepairReport repair_mesh(TriangleMesh& mesh);
 
+// Drops triangles with the same three vertices as an earlier one (any order or orientation),
+// keeping the first; returns how many were dropped. One of repair_mesh()'s steps.
+std::size_t remove_duplicate_triangles(TriangleMesh& mesh);
+
 // Counts what repair_mesh() would change, without changing the mesh.
 RepairReport diagnose_repairs(const TriangleMesh& mesh);
 

@@ -64,6 +64,17 @@ std::size_t remove_degenerate_triangles(TriangleMesh& mesh) {
   return before - mesh.triangles.size();
 }
 
+std::size_t remove_unreferenced_vertices(TriangleMesh& mesh) {
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const Triangle& t : mesh.triangles)
+    for (Index v : t) used[v] = true;
+  const std::size_t unused = std::count(used.begin(), used.end(), false);
+  if (unused > 0) compact_vertices(mesh, used);
+  return unused;
+}
+
+}  // namespace
+
 std::size_t remove_duplicate_triangles(TriangleMesh& mesh) {
   auto key = [](Triangle t) {
     std::sort(t.begin(), t.end());
@@ -84,17 +95,6 @@ std::size_t remove_duplicate_triangles(TriangleMesh& mesh) {
   mesh.triangles.resize(n);
   return removed;
 }
-
-std::size_t remove_unreferenced_vertices(TriangleMesh& mesh) {
-  std::vector<bool> used(mesh.vertices.size(), false);
-  for (const Triangle& t : mesh.triangles)
-    for (Index v : t) used[v] = true;
-  const std::size_t unused = std::count(used.begin(), used.end(), false);
-  if (unused > 0) compact_vertices(mesh, used);
-  return unused;
-}
-
-}  // namespace
 
 std::string RepairReport::summary() const {
   std::string s;

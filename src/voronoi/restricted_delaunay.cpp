@@ -3,6 +3,7 @@
 // crosses the surface, and so gives the triangle (i, a, b).
 #include <algorithm>
 
+#include "cvtmesh/repair.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 
 namespace cvtmesh {
@@ -48,21 +49,7 @@ void RestrictedDelaunayBuilder::end() {
     for (const Triangle& t : found) result_.triangles.push_back(rotated_to_smallest(t));
   chunks_.clear();
   // A Voronoi edge crossing the surface several times gives the same triangle several times.
-  std::vector<std::size_t> order(result_.triangles.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  auto key = [&](std::size_t k) {
-    Triangle t = result_.triangles[k];
-    std::sort(t.begin(), t.end());
-    return t;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return key(x) < key(y); });
-  std::vector<bool> keep(order.size(), true);
-  for (std::size_t k = 1; k < order.size(); ++k)
-    if (key(order[k]) == key(order[k - 1])) keep[order[k]] = false;
-  std::size_t m = 0;
-  for (std::size_t k = 0; k < result_.triangles.size(); ++k)
-    if (keep[k]) result_.triangles[m++] = result_.triangles[k];
-  result_.triangles.resize(m);
+  remove_duplicate_triangles(result_);
 }
 
 }  // namespace cvtmesh
