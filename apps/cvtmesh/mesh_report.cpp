@@ -80,6 +80,25 @@ std::string hausdorff_lines(const HausdorffReport& h, const TopologyReport& self
                  reference.euler_characteristic, self.boundary_loops, reference.boundary_loops);
 }
 
+MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
+                       const TriangleMesh* reference, std::size_t hausdorff_samples) {
+  MeshReport r;
+  r.topology = analyze_topology(mesh);
+  const QualityReport quality = measure_quality(mesh);
+  r.json = mesh_json(r.topology, quality);
+  r.text = fmt::format("{}: {}\n", name, topology_line(r.topology)) + quality_lines(quality);
+  if (reference) {
+    const TopologyReport ref_topology = analyze_topology(*reference);
+    HausdorffSettings settings;
+    settings.samples = hausdorff_samples;
+    const HausdorffReport distance = hausdorff_distance(mesh, *reference, settings);
+    r.same_topology_as_reference = same_topology(r.topology, ref_topology);
+    add_reference_json(r.json, distance, ref_topology, r.same_topology_as_reference);
+    r.text += hausdorff_lines(distance, r.topology, ref_topology);
+  }
+  return r;
+}
+
 void warn_about_topology(const std::string& file, const TopologyReport& t) {
   if (t.nonmanifold_edges > 0)
     fmt::print(stderr, "{}: warning: {} non-manifold edges (three or more triangles)\n", file,

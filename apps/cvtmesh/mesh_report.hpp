@@ -22,6 +22,17 @@ std::string quality_lines(const QualityReport& q);
 std::string hausdorff_lines(const HausdorffReport& h, const TopologyReport& self,
                             const TopologyReport& reference);
 
+// The full report of a mesh: counts, topology and quality, plus, against a reference, the
+// Hausdorff distance and the topology comparison. JSON and text carry the same figures.
+struct MeshReport {
+  TopologyReport topology;
+  bool same_topology_as_reference = true;
+  nlohmann::ordered_json json;
+  std::string text;
+};
+MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
+                       const TriangleMesh* reference, std::size_t hausdorff_samples = 0);
+
 // Non-fatal facts a user should hear about (non-manifold, several components, ...), one line
 // each on stderr, prefixed by the file name.
 void warn_about_topology(const std::string& file, const TopologyReport& t);

@@ -4,7 +4,6 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/io.hpp"
 #include "exit_codes.hpp"
 #include "mesh_report.hpp"
@@ -33,22 +32,11 @@ int run_quality(const QualityOptions& o) {
   const auto threads = limit_threads(o.threads);
   const TriangleMesh mesh = read_mesh(o.mesh);
   note_possible_repairs(o.mesh, mesh);
-  const TopologyReport topology = analyze_topology(mesh);
-  warn_about_topology(o.mesh, topology);
-  const QualityReport quality = measure_quality(mesh);
-  auto json = mesh_json(topology, quality);
-  std::string text =
-      fmt::format("{}: {}\n", o.mesh, topology_line(topology)) + quality_lines(quality);
-  if (!o.reference.empty()) {
-    const TriangleMesh reference = read_mesh(o.reference);
-    const TopologyReport ref_topology = analyze_topology(reference);
-    HausdorffSettings settings;
-    settings.samples = o.samples;
-    const HausdorffReport distance = hausdorff_distance(mesh, reference, settings);
-    add_reference_json(json, distance, ref_topology, same_topology(topology, ref_topology));
-    text += hausdorff_lines(distance, topology, ref_topology);
-  }
-  fmt::print("{}", o.json ? json.dump(2) + "\n" : text);
+  std::optional<TriangleMesh> reference;
+  if (!o.reference.empty()) reference = read_mesh(o.reference);
+  const MeshReport report = report_mesh(o.mesh, mesh, reference ? &*reference : nullptr, o.samples);
+  warn_about_topology(o.mesh, report.topology);
+  fmt::print("{}", o.json ? report.json.dump(2) + "\n" : report.text);
   return kOk;
 }
 

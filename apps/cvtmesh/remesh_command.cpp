@@ -4,7 +4,6 @@
 
 #include "commands.hpp"
 #include "cvtmesh/errors.hpp"
-#include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/io.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
@@ -45,13 +44,9 @@ int run_remesh(RemeshOptions o) {
   const RemeshResult r = remesh(input, s);
   write_mesh(o.output, r.mesh);
 
-  const TopologyReport topology = analyze_topology(r.mesh), reference = analyze_topology(input);
-  const QualityReport quality = measure_quality(r.mesh);
-  const HausdorffReport distance = hausdorff_distance(r.mesh, input);
-  const bool same = same_topology(topology, reference);
+  MeshReport report = report_mesh(o.output, r.mesh, &input);
   if (o.json) {
-    auto j = mesh_json(topology, quality);
-    add_reference_json(j, distance, reference, same);
+    auto& j = report.json;
     j["iterations"] = r.iterations;
     j["rvd_evaluations"] = r.rvd_evaluations;
     j["energy_initial"] = r.energy_initial;
@@ -66,12 +61,11 @@ int run_remesh(RemeshOptions o) {
                     {"extraction", r.seconds_extraction}};
     fmt::print("{}\n", j.dump(2));
   } else {
-    fmt::print("{}: {}\n{}{}", o.output, topology_line(topology), quality_lines(quality),
-               hausdorff_lines(distance, topology, reference));
+    fmt::print("{}", report.text);
     fmt::print("  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}\n",
                r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final);
   }
-  if (!same) warn_about_topology(o.output, topology);
+  if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;
 }
 

@@ -37,7 +37,7 @@ lbfgsfloatval_t evaluate(void* instance, const lbfgsfloatval_t* x, lbfgsfloatval
   const CvtObjective::Evaluation e = s.objective(s.seeds);
   for (int k = 0; k < n / 3; ++k)
     g[3 * k] = e.gradient[k].x, g[3 * k + 1] = e.gradient[k].y, g[3 * k + 2] = e.gradient[k].z;
-  if (s.objective.evaluations() == 1 || s.result.gradient_initial == 0) {
+  if (s.objective.evaluations() == 1) {  // the phase's starting point
     s.result.energy_initial = e.energy;
     s.result.gradient_initial = norm_of(e.gradient);
   }

@@ -159,10 +159,6 @@ int exact_side(const ClipFrame& f, const Definition& def, Index j, PredicateCoun
   return 1;
 }
 
-BoundedDouble bounded(double value, double error) {
-  return {value, error};
-}
-
 }  // namespace
 
 bool closer_to_cell(const ClipFrame& f, const RvdVertex& v, Index j, PredicateCounters& counters) {
@@ -170,8 +166,8 @@ bool closer_to_cell(const ClipFrame& f, const RvdVertex& v, Index j, PredicateCo
   const Vec3& xi = f.seeds[f.cell];
   const Vec3& xj = f.seeds[j];
   // Filter 1: the vertex's rounded position and its error bound, d = J·((v − x_i) + (v − x_j)).
-  const V<BoundedDouble> p{bounded(v.point.x, v.error), bounded(v.point.y, v.error),
-                           bounded(v.point.z, v.error)};
+  const V<BoundedDouble> p{BoundedDouble(v.point.x, v.error), BoundedDouble(v.point.y, v.error),
+                           BoundedDouble(v.point.z, v.error)};
   const V<BoundedDouble> to_i = p - V<BoundedDouble>{xi.x, xi.y, xi.z};
   const V<BoundedDouble> to_j = p - V<BoundedDouble>{xj.x, xj.y, xj.z};
   if (const int s = dot(diff<BoundedDouble>(xj, xi), to_i + to_j).certain_sign(); s != 0)
