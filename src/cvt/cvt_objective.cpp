@@ -1,17 +1,25 @@
 #include "cvt/cvt_objective.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <numeric>
 #include <tuple>
 
 namespace cvtmesh {
 
-std::vector<Vec3> CvtObjective::project(std::vector<Vec3>& seeds) const {
+std::vector<Vec3> CvtObjective::project(std::vector<Vec3>& seeds) {
+  const bool hinted = hints_.size() == seeds.size();
+  hints_.resize(seeds.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 256), [&](const auto& r) {
+    for (std::size_t s = r.begin(); s < r.end(); ++s)
+      hints_[s] = hinted ? projector_.nearest(seeds[s], hints_[s]) : projector_.nearest(seeds[s]);
+  });
   std::vector<Vec3> feet(seeds.size()), normals(seeds.size());
   for (std::size_t s = 0; s < seeds.size(); ++s) {
-    const SurfaceProjector::Foot foot = projector_.nearest(seeds[s]);
-    feet[s] = foot.point;
-    normals[s] = foot.normal;
+    feet[s] = hints_[s].point;
+    normals[s] = hints_[s].normal;
   }
   std::vector<std::size_t> order(seeds.size());
   std::iota(order.begin(), order.end(), std::size_t{0});

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "geometry/surface_projector.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
+#include "geometry/surface_projector.hpp"
 
 namespace cvtmesh {
 
@@ -26,14 +26,15 @@ class CvtObjective {
 
   // Moves each seed to its nearest surface point and returns the surface normals there. A seed
   // that would land on a point another seed already occupies (possible at convex corners) stays
-  // where it is, so seeds stay distinct.
-  std::vector<Vec3> project(std::vector<Vec3>& seeds) const;
+  // where it is, so seeds stay distinct. Each search starts from the seed's previous foot.
+  std::vector<Vec3> project(std::vector<Vec3>& seeds);
 
  private:
   const TriangleMesh& surface_;
   const SurfaceProjector& projector_;
   bool constrained_;
   int evaluations_ = 0;
+  std::vector<SurfaceProjector::Foot> hints_;  // the feet of the last projection
 };
 
 }  // namespace cvtmesh

@@ -3,6 +3,7 @@
 #include <lbfgs.h>
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace cvtmesh {
@@ -22,31 +23,41 @@ void report(const PhaseOptions& o, int iteration, double energy, double gradient
   (*o.progress)({o.name, iteration, energy, gradient, elapsed});
 }
 
-// liblbfgs calls back through a void*: this is what it points to.
+// liblbfgs calls back through a void*: this is what it points to. liblbfgs works on y = x / scale
+// (see minimize_lbfgs); `first` is the evaluation at the starting point, made before liblbfgs
+// starts and handed over at its first call, which is always at that point.
 struct LbfgsState {
   CvtObjective& objective;
   std::vector<Vec3>& seeds;
   const PhaseOptions& options;
   PhaseResult& result;
+  double scale;
+  std::optional<CvtObjective::Evaluation> first;
 };
 
-lbfgsfloatval_t evaluate(void* instance, const lbfgsfloatval_t* x, lbfgsfloatval_t* g, int n,
+lbfgsfloatval_t evaluate(void* instance, const lbfgsfloatval_t* y, lbfgsfloatval_t* g, int n,
                          lbfgsfloatval_t) {
   auto& s = *static_cast<LbfgsState*>(instance);
-  for (int k = 0; k < n / 3; ++k) s.seeds[k] = {x[3 * k], x[3 * k + 1], x[3 * k + 2]};
-  const CvtObjective::Evaluation e = s.objective(s.seeds);
-  for (int k = 0; k < n / 3; ++k)
-    g[3 * k] = e.gradient[k].x, g[3 * k + 1] = e.gradient[k].y, g[3 * k + 2] = e.gradient[k].z;
-  if (s.objective.evaluations() == 1) {  // the phase's starting point
-    s.result.energy_initial = e.energy;
-    s.result.gradient_initial = norm_of(e.gradient);
+  CvtObjective::Evaluation e;
+  if (s.first) {
+    e = std::move(*s.first);
+    s.first.reset();
+  } else {
+    const double c = s.scale;
+    for (int k = 0; k < n / 3; ++k) s.seeds[k] = c * Vec3{y[3 * k], y[3 * k + 1], y[3 * k + 2]};
+    e = s.objective(s.seeds);
+  }
+  for (int k = 0; k < n / 3; ++k) {
+    const Vec3 gy = s.scale * e.gradient[k];  // dF/dy = scale · dF/dx
+    g[3 * k] = gy.x, g[3 * k + 1] = gy.y, g[3 * k + 2] = gy.z;
   }
   return e.energy;
 }
 
 int progress(void* instance, const lbfgsfloatval_t*, const lbfgsfloatval_t*, lbfgsfloatval_t fx,
-             lbfgsfloatval_t, lbfgsfloatval_t gnorm, lbfgsfloatval_t, int, int k, int) {
+             lbfgsfloatval_t, lbfgsfloatval_t gnorm_y, lbfgsfloatval_t, int, int k, int) {
   auto& s = *static_cast<LbfgsState*>(instance);
+  const double gnorm = gnorm_y / s.scale;
   s.result.iterations = k;
   s.result.energies.push_back(fx);
   s.result.energy_final = fx;
@@ -62,25 +73,39 @@ PhaseResult minimize_lbfgs(CvtObjective& objective, std::vector<Vec3>& seeds,
                            const PhaseOptions& o) {
   PhaseResult result;
   if (o.max_iterations <= 0) return result;
+  LbfgsState state{objective, seeds, o, result, 1.0, objective(seeds)};
+  result.energy_initial = state.first->energy;
+  result.gradient_initial = norm_of(state.first->gradient);
+  // liblbfgs tries a first step of unit length along -∇F. Scaling the variables by the length
+  // of a Lloyd step (x_i → c_i) makes that first trial a Lloyd-sized step: without it, the
+  // first line search of each phase costs several RVD evaluations.
+  double lloyd = 0;
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const Vec3 d = state.first->centroids[k] - seeds[k];
+    lloyd += dot(d, d);
+  }
+  if (lloyd > 0) state.scale = std::sqrt(lloyd);
   const int n = static_cast<int>(3 * seeds.size());
-  lbfgsfloatval_t* x = lbfgs_malloc(n);
-  if (!x) throw std::bad_alloc();
-  for (std::size_t k = 0; k < seeds.size(); ++k)
-    x[3 * k] = seeds[k].x, x[3 * k + 1] = seeds[k].y, x[3 * k + 2] = seeds[k].z;
+  lbfgsfloatval_t* y = lbfgs_malloc(n);
+  if (!y) throw std::bad_alloc();
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const Vec3 yk = (1 / state.scale) * seeds[k];
+    y[3 * k] = yk.x, y[3 * k + 1] = yk.y, y[3 * k + 2] = yk.z;
+  }
   lbfgs_parameter_t parameters;
   lbfgs_parameter_init(&parameters);
   parameters.m = 7;        // history pairs, as in Liu et al. 2009 (paper's [LWL*09])
   parameters.epsilon = 0;  // stopping is ours (relative gradient), in `progress`
   parameters.max_iterations = o.max_iterations;
   parameters.max_linesearch = 20;
-  LbfgsState state{objective, seeds, o, result};
   lbfgsfloatval_t fx = 0;
-  const int status = lbfgs(n, x, &fx, evaluate, progress, &state, &parameters);
-  // liblbfgs leaves x at its best point; a line search that cannot progress (rounding) is a
+  const int status = lbfgs(n, y, &fx, evaluate, progress, &state, &parameters);
+  // liblbfgs leaves y at its best point; a line search that cannot progress (rounding) is a
   // normal end this close to a minimum, not an error.
   (void)status;
-  for (std::size_t k = 0; k < seeds.size(); ++k) seeds[k] = {x[3 * k], x[3 * k + 1], x[3 * k + 2]};
-  lbfgs_free(x);
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    seeds[k] = state.scale * Vec3{y[3 * k], y[3 * k + 1], y[3 * k + 2]};
+  lbfgs_free(y);
   if (result.energies.empty()) result.energy_final = result.energy_initial;
   return result;
 }

@@ -20,6 +20,12 @@ struct SurfaceProjector::Tree {
   Triangles triangles;
   std::vector<Vec3> normals;
   AabbTree tree;
+
+  Foot foot(const AabbTree::Point_and_primitive_id& found) const {
+    const auto& [point, triangle] = found;
+    const auto index = static_cast<std::size_t>(triangle - triangles.begin());
+    return {{point.x(), point.y(), point.z()}, normals[index], index};
+  }
 };
 
 SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
@@ -45,10 +51,15 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
 SurfaceProjector::~SurfaceProjector() = default;
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p) const {
-  const auto [point, triangle] =
-      tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z));
-  const auto index = static_cast<std::size_t>(triangle - tree_->triangles.begin());
-  return {{point.x(), point.y(), point.z()}, tree_->normals[index]};
+  return tree_->foot(tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z)));
+}
+
+SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint) const {
+  const AabbTree::Point_and_primitive_id start{
+      Kernel::Point_3(hint.point.x, hint.point.y, hint.point.z),
+      tree_->triangles.begin() + static_cast<std::ptrdiff_t>(hint.triangle)};
+  return tree_->foot(
+      tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z), start));
 }
 
 }  // namespace cvtmesh

@@ -13,11 +13,15 @@ class SurfaceProjector {
   explicit SurfaceProjector(const TriangleMesh& surface);
   ~SurfaceProjector();
   struct Foot {
-    Vec3 point;   // the nearest surface point
-    Vec3 normal;  // unit normal of the triangle it lies on
+    Vec3 point;            // the nearest surface point
+    Vec3 normal;           // unit normal of the triangle it lies on
+    std::size_t triangle;  // that triangle, as numbered inside the projector
   };
   // Thread-safe after construction.
   Foot nearest(const Vec3& p) const;
+  // The same, starting the search from a foot found earlier for a point nearby (much faster
+  // when the point has moved little, as seeds do between CVT iterations).
+  Foot nearest(const Vec3& p, const Foot& hint) const;
   double squared_distance(const Vec3& p) const {
     const Vec3 d = nearest(p).point - p;
     return dot(d, d);

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <optional>
 
 #include "cvtmesh/rvd.hpp"
 #include "predicates/side_of_bisector.hpp"
@@ -37,6 +38,7 @@ struct Scratch {
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
   std::size_t polygons = 0;
+  std::optional<Index> previous_start;  // the previous triangle's start seed in this chunk
 };
 
 }  // namespace
@@ -73,6 +75,21 @@ struct RestrictedVoronoiDiagram::Impl {
     return true;
   }
 
+  // The seed nearest to q: a greedy walk on the Delaunay graph from `from`, which ends at the
+  // nearest seed because a seed that is not the nearest always has a Delaunay neighbour nearer
+  // to q. Consecutive triangles are usually close, so the walk is short.
+  Index walk_to_nearest(const Vec3& q, Index from) const {
+    const auto d2 = [&](Index s) { return dot(seeds[s] - q, seeds[s] - q); };
+    for (double best = d2(from);;) {
+      const Index at = from;
+      for (Index j : neighbors.of(at)) {
+        const double d = d2(j);
+        if (d < best) best = d, from = j;
+      }
+      if (from == at) return from;
+    }
+  }
+
   // Largest distance from the cell's seed to the polygon, rounded up past every vertex's error.
   double reach(const Vec3& seed, const Polygon& polygon) const {
     double r2 = 0;
@@ -87,7 +104,9 @@ struct RestrictedVoronoiDiagram::Impl {
                      Scratch& s) const {
     predicates::ClipFrame frame{surface->corners(t), seeds.data(), 0};
     const Vec3 centroid = (1.0 / 3) * (frame.corners[0] + frame.corners[1] + frame.corners[2]);
-    const Index start = (*nearest)(centroid);
+    const Index start =
+        s.previous_start ? walk_to_nearest(centroid, *s.previous_start) : (*nearest)(centroid);
+    s.previous_start = start;
     const std::size_t stamp = t + 1;
     s.stamp[start] = stamp;
     s.queue.assign(1, start);
@@ -173,6 +192,7 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
   });
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
+    s.previous_start.reset();  // chunks start alike on any thread: deterministic walks
     const std::size_t end = std::min(triangles, (chunk + 1) * kChunkSize);
     for (std::size_t t = chunk * kChunkSize; t < end; ++t)
       if (!impl_->flat[t]) impl_->clip_triangle(t, chunk, sinks, s);
