@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
-#include <optional>
 
 #include "cvtmesh/rvd.hpp"
 #include "predicates/side_of_bisector.hpp"
@@ -38,7 +37,6 @@ struct Scratch {
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
   std::size_t polygons = 0;
-  std::optional<Index> previous_start;  // the previous triangle's start seed in this chunk
 };
 
 }  // namespace
@@ -90,8 +88,31 @@ struct RestrictedVoronoiDiagram::Impl {
     }
   }
 
+  // The cell that contains input vertex q, decided exactly (with the perturbation's tie rule):
+  // from the nearest seed in floating point, move to any neighbour the exact predicate finds
+  // closer until none is. Each move strictly lowers q's perturbed power distance, and a seed
+  // whose cell misses q always has such a neighbour (the segment from the seed to q leaves its
+  // cell through a facet shared with it), so the walk ends in q's cell.
+  Index owner_of(const Vec3& q, Index start, predicates::PredicateCounters& counters) const {
+    predicates::ClipFrame frame{{q, q, q}, seeds.data(), walk_to_nearest(q, start)};
+    const RvdVertex corner = predicates::corner_vertex(frame, 0);
+    for (;;) {
+      const Index i = frame.cell;
+      const double reach2 = reach(seeds[i], std::span(&corner, 1));
+      for (Index j : neighbors.of(i)) {
+        const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
+        if (d2 * (1 - 1e-10) > 4 * reach2) break;
+        if (!predicates::closer_to_cell(frame, corner, j, counters)) {
+          frame.cell = j;
+          break;
+        }
+      }
+      if (frame.cell == i) return i;
+    }
+  }
+
   // Largest distance from the cell's seed to the polygon, rounded up past every vertex's error.
-  double reach(const Vec3& seed, const Polygon& polygon) const {
+  double reach(const Vec3& seed, std::span<const RvdVertex> polygon) const {
     double r2 = 0;
     for (const RvdVertex& v : polygon) {
       const double r = norm(v.point - seed) + std::sqrt(3.0) * v.error;
@@ -100,13 +121,50 @@ struct RestrictedVoronoiDiagram::Impl {
     return r2 * (1 + 1e-10);
   }
 
+  // A ball that contains the polygon: centred at its vertex average, radius rounded up past
+  // the vertices' errors.
+  struct Ball {
+    Vec3 center;
+    double radius;
+  };
+  static Ball bounding_ball(std::span<const RvdVertex> polygon) {
+    Vec3 center{};
+    for (const RvdVertex& v : polygon) center = center + v.point;
+    center = (1.0 / static_cast<double>(polygon.size())) * center;
+    double radius = 0;
+    for (const RvdVertex& v : polygon)
+      radius = std::max(radius, norm(v.point - center) + std::sqrt(3.0) * v.error);
+    return {center, radius * (1 + 1e-10)};
+  }
+
+  // Whether the ball lies on x_i's side of bisector (i, j) with a margin far beyond rounding:
+  // then every polygon vertex in it does, and clipping by j would change nothing. A cheap
+  // test (one dot product) that spares the exact predicates most neighbours.
+  static bool beyond_bisector(const Ball& ball, const Vec3& xi, const Vec3& xj) {
+    const Vec3 J = xj - xi, C = ball.center - xi;
+    const double JJ = dot(J, J), length = std::sqrt(JJ);
+    // Over the ball, 2 J·(p − x_i) is at most 2 J·C + 2 |J| r; the bisector is at J·J.
+    const double highest = 2 * dot(J, C) + 2 * length * ball.radius;
+    const double slack = 1e-10 * (JJ + 2 * length * (norm(C) + ball.radius));
+    return highest + slack < JJ;
+  }
+
+  // `owners`: the cell of each input vertex (owner_of).
   void clip_triangle(std::size_t t, std::size_t chunk, std::span<PolygonSink* const> sinks,
-                     Scratch& s) const {
+                     const std::vector<Index>& owners, Scratch& s) const {
     predicates::ClipFrame frame{surface->corners(t), seeds.data(), 0};
-    const Vec3 centroid = (1.0 / 3) * (frame.corners[0] + frame.corners[1] + frame.corners[2]);
-    const Index start =
-        s.previous_start ? walk_to_nearest(centroid, *s.previous_start) : (*nearest)(centroid);
-    s.previous_start = start;
+    const auto& corners = surface->triangles[t];
+    const Index start = owners[corners[0]];
+    if (owners[corners[1]] == start && owners[corners[2]] == start) {
+      // Cells are convex: a triangle whose corners lie in one cell lies in it whole.
+      frame.cell = start;
+      s.polygon.clear();
+      for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
+      ++s.polygons;
+      const RvdPolygon polygon{start, static_cast<Index>(t), s.polygon};
+      for (PolygonSink* sink : sinks) sink->polygon(chunk, polygon);
+      return;
+    }
     const std::size_t stamp = t + 1;
     s.stamp[start] = stamp;
     s.queue.assign(1, start);
@@ -117,18 +175,20 @@ struct RestrictedVoronoiDiagram::Impl {
       s.polygon.clear();
       for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
       double reach2 = reach(seeds[i], s.polygon);
+      Ball ball = bounding_ball(s.polygon);
       for (Index j : neighbors.of(i)) {
         // A bisector farther than twice the polygon's reach cannot cut it, and neighbours are
         // sorted by distance: the rest cannot either. Rigorous: reach2 is rounded up.
         const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
         if (d2 * (1 - 1e-10) > 4 * reach2) break;
-        if (!clip(frame, j, s)) continue;
+        if (beyond_bisector(ball, seeds[i], seeds[j]) || !clip(frame, j, s)) continue;
         if (s.stamp[j] != stamp) {
           s.stamp[j] = stamp;
           s.queue.push_back(j);
         }
         if (s.polygon.empty()) break;
         reach2 = reach(seeds[i], s.polygon);
+        ball = bounding_ball(s.polygon);
       }
       if (s.polygon.size() < 3) continue;
       ++s.polygons;
@@ -190,12 +250,25 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
     s.stamp.assign(impl_->seeds.size(), 0);
     return s;
   });
+  // Walks start from the previous vertex's cell (vertices in a file are mostly in spatial
+  // order), or from the kd-tree at each chunk's start: alike on any thread count.
+  const std::vector<Vec3>& vertices = impl_->surface->vertices;
+  std::vector<Index> owners(vertices.size());
+  tbb::parallel_for(
+      std::size_t{0}, (vertices.size() + kChunkSize - 1) / kChunkSize, [&](std::size_t chunk) {
+        Scratch& s = scratch.local();
+        const std::size_t begin = chunk * kChunkSize;
+        const std::size_t end = std::min(vertices.size(), begin + kChunkSize);
+        for (std::size_t v = begin; v < end; ++v) {
+          const Index from = v == begin ? (*impl_->nearest)(vertices[v]) : owners[v - 1];
+          owners[v] = impl_->owner_of(vertices[v], from, s.counters);
+        }
+      });
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
-    s.previous_start.reset();  // chunks start alike on any thread: deterministic walks
     const std::size_t end = std::min(triangles, (chunk + 1) * kChunkSize);
     for (std::size_t t = chunk * kChunkSize; t < end; ++t)
-      if (!impl_->flat[t]) impl_->clip_triangle(t, chunk, sinks, s);
+      if (!impl_->flat[t]) impl_->clip_triangle(t, chunk, sinks, owners, s);
   });
   for (PolygonSink* sink : sinks) sink->end();
   TraversalStats stats;
