@@ -4,9 +4,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <string>
@@ -26,6 +30,8 @@ using CellBase =
                                               CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+using Cell = Delaunay::Cell_handle;
+constexpr Index kNoStamp = std::numeric_limits<Index>::max();
 
 void reject_bad_seeds(const std::vector<Vec3>& seeds) {
   for (std::size_t s = 0; s < seeds.size(); ++s) {
@@ -50,28 +56,32 @@ void reject_bad_seeds(const std::vector<Vec3>& seeds) {
 // cell neighbours; so every pair of vertices of each degenerate cell is made a neighbour pair.
 // The degenerate cells are found as groups of simplices joined across a facet whose opposite
 // vertex lies exactly on the neighbouring simplex's circumsphere (exact predicate); infinite
-// simplices join over coplanar hull facets the same way.
-void add_cospherical_pairs(Delaunay& dt, std::vector<std::pair<Index, Index>>& pairs) {
+// simplices join over coplanar hull facets the same way. `cells` are all cells, info() = index.
+void add_cospherical_pairs(const Delaunay& dt, const std::vector<Cell>& cells,
+                           std::vector<std::pair<Index, Index>>& pairs) {
   const int dim = dt.dimension();
   if (dim < 2) return;
-  std::vector<Delaunay::Cell_handle> cells;
-  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
-    c->info() = cells.size();
-    cells.push_back(c);
-  }
-  UnionFind groups(cells.size());
-  std::vector<std::size_t> group_size(cells.size(), 1);
-  for (const Delaunay::Cell_handle c : cells) {
-    for (int i = 0; i <= dim; ++i) {
-      const Delaunay::Cell_handle other = c->neighbor(i);
-      if (other->info() < c->info()) continue;  // each facet once
-      const Delaunay::Vertex_handle opposite = other->vertex(other->index(c));
-      if (dt.is_infinite(opposite)) continue;
-      const CGAL::Bounded_side side = dim == 3 ? dt.side_of_sphere(c, opposite->point())
-                                               : dt.side_of_circle(c, 3, opposite->point());
-      if (side == CGAL::ON_BOUNDARY) groups.unite(c->info(), other->info());
+  tbb::enumerable_thread_specific<std::vector<std::pair<std::size_t, std::size_t>>> joins;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 1024), [&](const auto& r) {
+    auto& local = joins.local();
+    for (std::size_t k = r.begin(); k < r.end(); ++k) {
+      const Cell c = cells[k];
+      for (int i = 0; i <= dim; ++i) {
+        const Cell other = c->neighbor(i);
+        if (other->info() < c->info()) continue;  // each facet once
+        const Delaunay::Vertex_handle opposite = other->vertex(other->index(c));
+        if (dt.is_infinite(opposite)) continue;
+        const CGAL::Bounded_side side = dim == 3 ? dt.side_of_sphere(c, opposite->point())
+                                                 : dt.side_of_circle(c, 3, opposite->point());
+        if (side == CGAL::ON_BOUNDARY) local.emplace_back(c->info(), other->info());
+      }
     }
-  }
+  });
+  UnionFind groups(cells.size());
+  bool any = false;
+  for (const auto& local : joins)
+    for (const auto& [a, b] : local) groups.unite(a, b), any = true;
+  if (!any) return;
   std::map<std::size_t, std::vector<Index>> members;  // only degenerate groups: usually few
   std::vector<std::size_t> cells_in_group(cells.size(), 0);
   for (std::size_t k = 0; k < cells.size(); ++k) ++cells_in_group[groups.find(k)];
@@ -90,6 +100,42 @@ void add_cospherical_pairs(Delaunay& dt, std::vector<std::pair<Index, Index>>& p
   }
 }
 
+// Compressed lists from a list of pairs (each pair once, either order).
+SeedNeighbors from_pairs(std::size_t n, const std::vector<std::pair<Index, Index>>& pairs) {
+  std::vector<std::size_t> degree(n, 0);
+  for (const auto& [a, b] : pairs) ++degree[a], ++degree[b];
+  SeedNeighbors lists;
+  lists.offsets.assign(n + 1, 0);
+  std::partial_sum(degree.begin(), degree.end(), lists.offsets.begin() + 1);
+  lists.ids.resize(lists.offsets.back());
+  std::vector<std::size_t> fill(lists.offsets.begin(), lists.offsets.end() - 1);
+  for (const auto& [a, b] : pairs) {
+    lists.ids[fill[a]++] = b;
+    lists.ids[fill[b]++] = a;
+  }
+  return lists;
+}
+
+// The finite simplices around each seed (a compressed list, as SeedNeighbors is).
+SeedNeighbors incident_simplices(const Delaunay& dt, const std::vector<Cell>& cells,
+                                 std::size_t n) {
+  const int dim = dt.dimension();
+  std::vector<std::size_t> degree(n, 0);
+  for (const Cell c : cells)
+    if (!dt.is_infinite(c))
+      for (int i = 0; i <= dim; ++i) ++degree[c->vertex(i)->info()];
+  SeedNeighbors around;
+  around.offsets.assign(n + 1, 0);
+  std::partial_sum(degree.begin(), degree.end(), around.offsets.begin() + 1);
+  around.ids.resize(around.offsets.back());
+  std::vector<std::size_t> fill(around.offsets.begin(), around.offsets.end() - 1);
+  for (const Cell c : cells)
+    if (!dt.is_infinite(c))
+      for (int i = 0; i <= dim; ++i)
+        around.ids[fill[c->vertex(i)->info()]++] = static_cast<Index>(c->info());
+  return around;
+}
+
 }  // namespace
 
 SeedNeighbors delaunay_neighbors(const std::vector<Vec3>& seeds) {
@@ -101,35 +147,55 @@ SeedNeighbors delaunay_neighbors(const std::vector<Vec3>& seeds) {
     points.emplace_back(Kernel::Point_3(seeds[s].x, seeds[s].y, seeds[s].z), s);
   Delaunay dt(points.begin(), points.end());  // spatially sorted insertion
 
-  // Each Delaunay edge makes its two seeds Voronoi neighbours.
-  std::vector<std::pair<Index, Index>> pairs;
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-    pairs.emplace_back(e->first->vertex(e->second)->info(), e->first->vertex(e->third)->info());
-  add_cospherical_pairs(dt, pairs);
-  for (auto& [a, b] : pairs)
-    if (a > b) std::swap(a, b);
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<Cell> cells;
+  cells.reserve(dt.number_of_cells());
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    c->info() = cells.size();
+    cells.push_back(c);
+  }
+  std::vector<std::pair<Index, Index>> extra;
+  const int dim = dt.dimension();
+  if (dim < 1) return from_pairs(seeds.size(), extra);  // a single seed
+  add_cospherical_pairs(dt, cells, extra);
+  const SeedNeighbors cospherical = from_pairs(seeds.size(), extra);
+  const SeedNeighbors around = incident_simplices(dt, cells, seeds.size());
 
-  std::vector<std::size_t> degree(seeds.size(), 0);
-  for (const auto& [a, b] : pairs) ++degree[a], ++degree[b];
+  // Per seed, in parallel: the other vertices of its simplices, each once (a stamp per seed
+  // and thread), and its cospherical partners; then nearest first, ties by id, so that the
+  // order never depends on the triangulation's internals. Written to a scratch list with
+  // room for dim entries per simplex, then compacted.
+  std::vector<std::size_t> kept(seeds.size());
+  std::vector<Index> scratch(dim * around.ids.size() + cospherical.ids.size());
+  auto room = [&](Index s) { return dim * around.offsets[s] + cospherical.offsets[s]; };
+  tbb::enumerable_thread_specific<std::vector<Index>> stamps(
+      [&] { return std::vector<Index>(seeds.size(), kNoStamp); });
+  tbb::parallel_for(
+      tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
+        std::vector<Index>& stamp = stamps.local();
+        for (Index s = r.begin(); s < r.end(); ++s) {
+          Index* const out = scratch.data() + room(s);
+          std::size_t count = 0;
+          auto add = [&](Index t) {
+            if (t == s || stamp[t] == s) return;
+            stamp[t] = s;
+            out[count++] = t;
+          };
+          for (Index t : cospherical.of(s)) add(t);
+          for (Index c : around.of(s))
+            for (int i = 0; i <= dim; ++i) add(cells[c]->vertex(i)->info());
+          auto d2 = [&](Index t) { return dot(seeds[t] - seeds[s], seeds[t] - seeds[s]); };
+          std::sort(out, out + count,
+                    [&](Index a, Index b) { return std::pair(d2(a), a) < std::pair(d2(b), b); });
+          kept[s] = count;
+        }
+      });
   SeedNeighbors n;
   n.offsets.assign(seeds.size() + 1, 0);
-  std::partial_sum(degree.begin(), degree.end(), n.offsets.begin() + 1);
+  std::partial_sum(kept.begin(), kept.end(), n.offsets.begin() + 1);
   n.ids.resize(n.offsets.back());
-  std::vector<std::size_t> fill(n.offsets.begin(), n.offsets.end() - 1);
-  for (const auto& [a, b] : pairs) {
-    n.ids[fill[a]++] = b;
-    n.ids[fill[b]++] = a;
-  }
-  // Nearest first; ties by id, so the order never depends on the triangulation's internals.
-  for (Index s = 0; s < seeds.size(); ++s) {
-    auto begin = n.ids.begin() + static_cast<std::ptrdiff_t>(n.offsets[s]);
-    auto end = n.ids.begin() + static_cast<std::ptrdiff_t>(n.offsets[s + 1]);
-    auto d2 = [&](Index t) { return dot(seeds[t] - seeds[s], seeds[t] - seeds[s]); };
-    std::sort(begin, end,
-              [&](Index a, Index b) { return std::pair(d2(a), a) < std::pair(d2(b), b); });
-  }
+  for (Index s = 0; s < seeds.size(); ++s)
+    std::copy_n(scratch.begin() + static_cast<std::ptrdiff_t>(room(s)), kept[s],
+                n.ids.begin() + static_cast<std::ptrdiff_t>(n.offsets[s]));
   return n;
 }
 
