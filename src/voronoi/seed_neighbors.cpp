@@ -116,24 +116,29 @@ SeedNeighbors from_pairs(std::size_t n, const std::vector<std::pair<Index, Index
   return lists;
 }
 
-// The finite simplices around each seed (a compressed list, as SeedNeighbors is).
-SeedNeighbors incident_simplices(const Delaunay& dt, const std::vector<Cell>& cells,
-                                 std::size_t n) {
-  const int dim = dt.dimension();
-  std::vector<std::size_t> degree(n, 0);
-  for (const Cell c : cells)
-    if (!dt.is_infinite(c))
-      for (int i = 0; i <= dim; ++i) ++degree[c->vertex(i)->info()];
+// The vertices of each finite simplex, `dim + 1` per simplex in a flat array (read many times
+// below: contiguous, unlike CGAL's cells), and the simplices around each seed, as compressed
+// lists of positions in that array.
+struct Simplices {
+  std::vector<Index> vertices;
   SeedNeighbors around;
-  around.offsets.assign(n + 1, 0);
-  std::partial_sum(degree.begin(), degree.end(), around.offsets.begin() + 1);
-  around.ids.resize(around.offsets.back());
-  std::vector<std::size_t> fill(around.offsets.begin(), around.offsets.end() - 1);
-  for (const Cell c : cells)
+};
+
+Simplices finite_simplices(const Delaunay& dt, std::size_t n) {
+  const int dim = dt.dimension();
+  Simplices s;
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c)
     if (!dt.is_infinite(c))
-      for (int i = 0; i <= dim; ++i)
-        around.ids[fill[c->vertex(i)->info()]++] = static_cast<Index>(c->info());
-  return around;
+      for (int i = 0; i <= dim; ++i) s.vertices.push_back(c->vertex(i)->info());
+  std::vector<std::size_t> degree(n, 0);
+  for (Index v : s.vertices) ++degree[v];
+  s.around.offsets.assign(n + 1, 0);
+  std::partial_sum(degree.begin(), degree.end(), s.around.offsets.begin() + 1);
+  s.around.ids.resize(s.around.offsets.back());
+  std::vector<std::size_t> fill(s.around.offsets.begin(), s.around.offsets.end() - 1);
+  for (std::size_t k = 0; k < s.vertices.size(); ++k)
+    s.around.ids[fill[s.vertices[k]]++] = static_cast<Index>(k - k % (dim + 1));
+  return s;
 }
 
 }  // namespace
@@ -158,7 +163,8 @@ SeedNeighbors delaunay_neighbors(const std::vector<Vec3>& seeds) {
   if (dim < 1) return from_pairs(seeds.size(), extra);  // a single seed
   add_cospherical_pairs(dt, cells, extra);
   const SeedNeighbors cospherical = from_pairs(seeds.size(), extra);
-  const SeedNeighbors around = incident_simplices(dt, cells, seeds.size());
+  const Simplices simplices = finite_simplices(dt, seeds.size());
+  const SeedNeighbors& around = simplices.around;
 
   // Per seed, in parallel: the other vertices of its simplices, each once (a stamp per seed
   // and thread), and its cospherical partners; then nearest first, ties by id, so that the
@@ -167,26 +173,30 @@ SeedNeighbors delaunay_neighbors(const std::vector<Vec3>& seeds) {
   std::vector<std::size_t> kept(seeds.size());
   std::vector<Index> scratch(dim * around.ids.size() + cospherical.ids.size());
   auto room = [&](Index s) { return dim * around.offsets[s] + cospherical.offsets[s]; };
-  tbb::enumerable_thread_specific<std::vector<Index>> stamps(
-      [&] { return std::vector<Index>(seeds.size(), kNoStamp); });
+  struct Local {
+    std::vector<Index> stamp;
+    std::vector<std::pair<double, Index>> keyed;
+  };
+  tbb::enumerable_thread_specific<Local> locals([&] {
+    return Local{std::vector<Index>(seeds.size(), kNoStamp), {}};
+  });
   tbb::parallel_for(
       tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
-        std::vector<Index>& stamp = stamps.local();
+        Local& local = locals.local();
         for (Index s = r.begin(); s < r.end(); ++s) {
-          Index* const out = scratch.data() + room(s);
-          std::size_t count = 0;
+          local.keyed.clear();
           auto add = [&](Index t) {
-            if (t == s || stamp[t] == s) return;
-            stamp[t] = s;
-            out[count++] = t;
+            if (t == s || local.stamp[t] == s) return;
+            local.stamp[t] = s;
+            local.keyed.emplace_back(dot(seeds[t] - seeds[s], seeds[t] - seeds[s]), t);
           };
           for (Index t : cospherical.of(s)) add(t);
-          for (Index c : around.of(s))
-            for (int i = 0; i <= dim; ++i) add(cells[c]->vertex(i)->info());
-          auto d2 = [&](Index t) { return dot(seeds[t] - seeds[s], seeds[t] - seeds[s]); };
-          std::sort(out, out + count,
-                    [&](Index a, Index b) { return std::pair(d2(a), a) < std::pair(d2(b), b); });
-          kept[s] = count;
+          for (Index first : around.of(s))
+            for (int i = 0; i <= dim; ++i) add(simplices.vertices[first + i]);
+          std::sort(local.keyed.begin(), local.keyed.end());
+          Index* const out = scratch.data() + room(s);
+          for (std::size_t k = 0; k < local.keyed.size(); ++k) out[k] = local.keyed[k].second;
+          kept[s] = local.keyed.size();
         }
       });
   SeedNeighbors n;
