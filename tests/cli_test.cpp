@@ -254,7 +254,7 @@ TEST(CliRvd, JsonReportTilesTheSurface) {
   for (const char* key : {"seeds", "triangles", "polygons", "surface_area", "cells_area_sum",
                           "energy", "exact_fallbacks", "threads", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
-  for (const char* key : {"sampling", "kdtree", "delaunay", "rvd", "total"})
+  for (const char* key : {"sampling", "kdtree", "neighbors", "rvd", "total"})
     EXPECT_TRUE(j["timings"].contains(key)) << key;
   EXPECT_EQ(j["seeds"], 500);
   EXPECT_EQ(j["triangles"], 2304);

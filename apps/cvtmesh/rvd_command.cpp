@@ -74,7 +74,7 @@ int run_rvd(const RvdOptions& o) {
   const CellIntegrals& integrals = integrator.result();
   const double area = surface_area(mesh);
   const RvdBuildTimes& build = rvd.build_times();
-  const double total = sampling + build.kdtree_seconds + build.delaunay_seconds + traversal;
+  const double total = sampling + build.kdtree_seconds + build.neighbors_seconds + traversal;
   const std::size_t used_threads =
       tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
   if (o.json) {
@@ -88,10 +88,11 @@ int run_rvd(const RvdOptions& o) {
     j["predicates"] = stats.predicates;
     j["exact_fallbacks"] = stats.exact_fallbacks;
     j["perturbed_ties"] = stats.perturbed_ties;
+    j["radius_searches"] = stats.radius_searches;
     j["threads"] = used_threads;
     j["timings"] = {{"sampling", sampling},
                     {"kdtree", build.kdtree_seconds},
-                    {"delaunay", build.delaunay_seconds},
+                    {"neighbors", build.neighbors_seconds},
                     {"rvd", traversal},
                     {"total", total}};
     fmt::print("{}\n", j.dump(2));
@@ -101,12 +102,12 @@ int run_rvd(const RvdOptions& o) {
         "  area      cells {:.12g}   surface {:.12g}   relative difference {:.2e}\n"
         "  energy    {:.9g}\n"
         "  exact     {} of {} predicates went exact, {} ties decided by perturbation\n"
-        "  time      delaunay {:.3f}s   kd-tree {:.3f}s   rvd {:.3f}s   total {:.3f}s ({} "
+        "  time      kd-tree {:.3f}s   neighbours {:.3f}s   rvd {:.3f}s   total {:.3f}s ({} "
         "threads)\n",
         o.mesh, rvd.seeds().size(), mesh.triangles.size(), stats.polygons, integrals.total_mass,
         area, std::abs(integrals.total_mass - area) / area, integrals.total_energy,
-        stats.exact_fallbacks, stats.predicates, stats.perturbed_ties, build.delaunay_seconds,
-        build.kdtree_seconds, traversal, total, used_threads);
+        stats.exact_fallbacks, stats.predicates, stats.perturbed_ties, build.kdtree_seconds,
+        build.neighbors_seconds, traversal, total, used_threads);
   }
   return kOk;
 }

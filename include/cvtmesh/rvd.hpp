@@ -53,15 +53,16 @@ struct TraversalStats {
   std::size_t predicates = 0;       // side-of-bisector decisions
   std::size_t exact_fallbacks = 0;  // decisions the floating-point filter left to exact arithmetic
   std::size_t perturbed_ties = 0;   // exact ties decided by the symbolic perturbation
+  std::size_t radius_searches = 0;  // cells whose stored nearest seeds did not reach far enough
 };
 
 struct RvdBuildTimes {
-  double kdtree_seconds = 0, delaunay_seconds = 0;
+  double kdtree_seconds = 0, neighbors_seconds = 0;
 };
 
 class RestrictedVoronoiDiagram {
  public:
-  // Builds the seeds' Delaunay triangulation (their Voronoi neighbours) and a kd-tree. Throws
+  // Builds a kd-tree over the seeds and each seed's list of nearest seeds. Throws
   // InvalidArgument for no seeds, a non-finite seed, or two identical seeds (naming both).
   // `surface` must outlive this object.
   RestrictedVoronoiDiagram(const TriangleMesh& surface, std::vector<Vec3> seeds);
@@ -76,8 +77,6 @@ class RestrictedVoronoiDiagram {
 
   const TriangleMesh& surface() const;
   const std::vector<Vec3>& seeds() const;
-  // Voronoi neighbours of a seed (its Delaunay edges), nearest first.
-  std::span<const Index> neighbors(Index seed) const;
   const RvdBuildTimes& build_times() const;
 
  private:

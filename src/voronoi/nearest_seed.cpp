@@ -46,4 +46,20 @@ Index NearestSeed::operator()(const Vec3& p) const {
   return static_cast<Index>(index);
 }
 
+void NearestSeed::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const {
+  std::vector<std::size_t> indices(k);
+  std::vector<double> d2(k);
+  const double query[3] = {p.x, p.y, p.z};
+  const std::size_t found = tree_->index.knnSearch(query, k, indices.data(), d2.data());
+  out.assign(indices.begin(), indices.begin() + static_cast<std::ptrdiff_t>(found));
+}
+
+void NearestSeed::within(const Vec3& p, double r2, std::vector<Index>& out) const {
+  std::vector<std::pair<std::size_t, double>> found;
+  const double query[3] = {p.x, p.y, p.z};
+  tree_->index.radiusSearch(query, r2, found, nanoflann::SearchParams(32, 0, false));
+  out.clear();
+  for (const auto& [index, d2] : found) out.push_back(static_cast<Index>(index));
+}
+
 }  // namespace cvtmesh

@@ -1,4 +1,4 @@
-// The seed nearest to a point: a kd-tree over the seeds (nanoflann).
+// Seeds nearest to a point: a kd-tree over the seeds (nanoflann).
 #pragma once
 
 #include <memory>
@@ -14,6 +14,10 @@ class NearestSeed {
   ~NearestSeed();
   // Thread-safe after construction; deterministic (the tree is built the same way every time).
   Index operator()(const Vec3& p) const;
+  // The k seeds nearest to p (all seeds if fewer), in no particular order.
+  void nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const;
+  // Every seed within squared distance r2 of p, in no particular order.
+  void within(const Vec3& p, double r2, std::vector<Index>& out) const;
 
  private:
   struct Tree;

@@ -22,6 +22,11 @@ namespace {
 // depend on the thread count.
 constexpr std::size_t kChunkSize = 1024;
 
+// Nearest seeds stored per seed: enough for nearly every polygon of a centroidal tessellation
+// (about 6 Voronoi neighbours on a surface), few enough to find fast; the rest come from
+// radius searches (see Impl::candidates).
+constexpr std::size_t kStoredNeighbors = 20;
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -37,6 +42,8 @@ struct Scratch {
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
   std::size_t polygons = 0;
+  std::vector<Index> spare;  // candidates from a radius search (Impl::candidates)
+  std::size_t radius_searches = 0;
 };
 
 }  // namespace
@@ -46,7 +53,13 @@ struct RestrictedVoronoiDiagram::Impl {
   std::vector<Vec3> seeds;
   SeedNeighbors neighbors;
   std::unique_ptr<NearestSeed> nearest;
-  std::vector<bool> flat;  // zero-area triangles (exact test): no facet plane, nothing to clip
+
+  // Zero-area triangles (exact test) have no facet plane, and nothing to clip.
+  bool flat(std::size_t t) const {
+    const auto [a, b, c] = surface->corners(t);
+    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+    return CGAL::collinear(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z));
+  }
   RvdBuildTimes times;
 
   // Clips `polygon` (in the frame's cell) by the bisector with seed j. Returns whether the
@@ -73,9 +86,9 @@ struct RestrictedVoronoiDiagram::Impl {
     return true;
   }
 
-  // The seed nearest to q: a greedy walk on the Delaunay graph from `from`, which ends at the
-  // nearest seed because a seed that is not the nearest always has a Delaunay neighbour nearer
-  // to q. Consecutive triangles are usually close, so the walk is short.
+  // A seed near q, usually the nearest: a greedy walk in floating point over the stored nearest
+  // seeds, from `from`. Consecutive vertices are usually close, so the walk is short; owner_of
+  // then decides exactly.
   Index walk_to_nearest(const Vec3& q, Index from) const {
     const auto d2 = [&](Index s) { return dot(seeds[s] - q, seeds[s] - q); };
     for (double best = d2(from);;) {
@@ -88,25 +101,50 @@ struct RestrictedVoronoiDiagram::Impl {
     }
   }
 
+  // Calls visit(j) for every seed j whose bisector with seed i may meet a polygon around x_i,
+  // until visit returns false. reach2() is the polygon's current squared reach from x_i,
+  // rounded up: a bisector farther than twice that cannot cut the polygon. The stored nearest
+  // seeds come first, nearest first, so the loop can stop at the first one out of reach; if
+  // the polygon still reaches past them all, a radius search fetches the rest (rare once seeds
+  // are well spread). The clipped polygon does not depend on the order of the bisectors.
+  template <class Reach2, class Visit>
+  void for_candidates(Index i, Scratch& s, const Reach2& reach2, const Visit& visit) const {
+    const auto within = [&](Index j) {
+      const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
+      return d2 * (1 - 1e-10) <= 4 * reach2();
+    };
+    const std::span<const Index> stored = neighbors.of(i);
+    for (Index j : stored)
+      if (!within(j) || !visit(j)) return;
+    if (stored.size() + 1 == seeds.size()) return;  // no other seed
+    ++s.radius_searches;
+    nearest->within(seeds[i], 4 * reach2() * (1 + 1e-6), s.spare);
+    // In the search's own order (deterministic; clipping's result does not depend on it),
+    // skipping the seeds the shrinking polygon no longer reaches.
+    for (Index j : s.spare)
+      if (j != i && std::find(stored.begin(), stored.end(), j) == stored.end() && within(j) &&
+          !visit(j))
+        return;
+  }
+
   // The cell that contains input vertex q, decided exactly (with the perturbation's tie rule):
-  // from the nearest seed in floating point, move to any neighbour the exact predicate finds
-  // closer until none is. Each move strictly lowers q's perturbed power distance, and a seed
-  // whose cell misses q always has such a neighbour (the segment from the seed to q leaves its
-  // cell through a facet shared with it), so the walk ends in q's cell.
-  Index owner_of(const Vec3& q, Index start, predicates::PredicateCounters& counters) const {
+  // from a seed near q, move to any candidate the exact predicate finds closer until none is.
+  // Each move strictly lowers q's perturbed power distance, so the walk ends; and any seed
+  // closer to q than x_i lies within 2|q − x_i| of x_i, where the candidates reach, so it ends
+  // in q's cell.
+  Index owner_of(const Vec3& q, Index start, Scratch& s) const {
     predicates::ClipFrame frame{{q, q, q}, seeds.data(), walk_to_nearest(q, start)};
     const RvdVertex corner = predicates::corner_vertex(frame, 0);
     for (;;) {
       const Index i = frame.cell;
       const double reach2 = reach(seeds[i], std::span(&corner, 1));
-      for (Index j : neighbors.of(i)) {
-        const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
-        if (d2 * (1 - 1e-10) > 4 * reach2) break;
-        if (!predicates::closer_to_cell(frame, corner, j, counters)) {
-          frame.cell = j;
-          break;
-        }
-      }
+      for_candidates(
+          i, s, [&] { return reach2; },
+          [&](Index j) {
+            if (predicates::closer_to_cell(frame, corner, j, s.counters)) return true;
+            frame.cell = j;
+            return false;
+          });
       if (frame.cell == i) return i;
     }
   }
@@ -176,20 +214,19 @@ struct RestrictedVoronoiDiagram::Impl {
       for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
       double reach2 = reach(seeds[i], s.polygon);
       Ball ball = bounding_ball(s.polygon);
-      for (Index j : neighbors.of(i)) {
-        // A bisector farther than twice the polygon's reach cannot cut it, and neighbours are
-        // sorted by distance: the rest cannot either. Rigorous: reach2 is rounded up.
-        const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
-        if (d2 * (1 - 1e-10) > 4 * reach2) break;
-        if (beyond_bisector(ball, seeds[i], seeds[j]) || !clip(frame, j, s)) continue;
-        if (s.stamp[j] != stamp) {
-          s.stamp[j] = stamp;
-          s.queue.push_back(j);
-        }
-        if (s.polygon.empty()) break;
-        reach2 = reach(seeds[i], s.polygon);
-        ball = bounding_ball(s.polygon);
-      }
+      for_candidates(
+          i, s, [&] { return reach2; },
+          [&](Index j) {
+            if (beyond_bisector(ball, seeds[i], seeds[j]) || !clip(frame, j, s)) return true;
+            if (s.stamp[j] != stamp) {
+              s.stamp[j] = stamp;
+              s.queue.push_back(j);
+            }
+            if (s.polygon.empty()) return false;
+            reach2 = reach(seeds[i], s.polygon);
+            ball = bounding_ball(s.polygon);
+            return true;
+          });
       if (s.polygon.size() < 3) continue;
       ++s.polygons;
       const RvdPolygon polygon{i, static_cast<Index>(t), s.polygon};
@@ -203,19 +240,13 @@ RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
     : impl_(std::make_unique<Impl>()) {
   impl_->surface = &surface;
   impl_->seeds = std::move(seeds);
-  impl_->flat.resize(surface.triangles.size());
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    const auto [a, b, c] = surface.corners(t);
-    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-    impl_->flat[t] =
-        CGAL::collinear(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z));
-  }
+  reject_bad_seeds(impl_->seeds);
   auto start = std::chrono::steady_clock::now();
-  impl_->neighbors = delaunay_neighbors(impl_->seeds);
-  impl_->times.delaunay_seconds = seconds_since(start);
-  start = std::chrono::steady_clock::now();
   impl_->nearest = std::make_unique<NearestSeed>(impl_->seeds);
   impl_->times.kdtree_seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  impl_->neighbors = nearest_neighbors(impl_->seeds, *impl_->nearest, kStoredNeighbors);
+  impl_->times.neighbors_seconds = seconds_since(start);
 }
 
 RestrictedVoronoiDiagram::~RestrictedVoronoiDiagram() = default;
@@ -228,9 +259,6 @@ const TriangleMesh& RestrictedVoronoiDiagram::surface() const {
 }
 const std::vector<Vec3>& RestrictedVoronoiDiagram::seeds() const {
   return impl_->seeds;
-}
-std::span<const Index> RestrictedVoronoiDiagram::neighbors(Index seed) const {
-  return impl_->neighbors.of(seed);
 }
 const RvdBuildTimes& RestrictedVoronoiDiagram::build_times() const {
   return impl_->times;
@@ -261,14 +289,14 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
         const std::size_t end = std::min(vertices.size(), begin + kChunkSize);
         for (std::size_t v = begin; v < end; ++v) {
           const Index from = v == begin ? (*impl_->nearest)(vertices[v]) : owners[v - 1];
-          owners[v] = impl_->owner_of(vertices[v], from, s.counters);
+          owners[v] = impl_->owner_of(vertices[v], from, s);
         }
       });
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
     const std::size_t end = std::min(triangles, (chunk + 1) * kChunkSize);
     for (std::size_t t = chunk * kChunkSize; t < end; ++t)
-      if (!impl_->flat[t]) impl_->clip_triangle(t, chunk, sinks, owners, s);
+      if (!impl_->flat(t)) impl_->clip_triangle(t, chunk, sinks, owners, s);
   });
   for (PolygonSink* sink : sinks) sink->end();
   TraversalStats stats;
@@ -277,6 +305,7 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
     stats.predicates += s.counters.predicates;
     stats.exact_fallbacks += s.counters.exact_fallbacks;
     stats.perturbed_ties += s.counters.perturbed_ties;
+    stats.radius_searches += s.radius_searches;
   }
   return stats;
 }

@@ -1,15 +1,20 @@
-// Voronoi neighbours of the seeds, from their 3D Delaunay triangulation (CGAL).
+// Candidate Voronoi neighbours of the seeds: each seed's k nearest seeds (kd-tree). The RVD
+// clips with them under a security radius: a bisector can cut a polygon only if its seed lies
+// within twice the polygon's distance from the cell's seed, so a list that reaches farther
+// than that holds every neighbour that matters, and a radius search completes one that does
+// not. No Delaunay triangulation is needed, and none of its degenerate cases arise.
 #pragma once
 
 #include <span>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
+#include "voronoi/nearest_seed.hpp"
 
 namespace cvtmesh {
 
-// Compressed adjacency: the neighbours of seed s are ids[offsets[s] .. offsets[s+1]), sorted by
-// distance to s (nearest first), so that clipping can stop at the first bisector too far away.
+// Compressed adjacency: the candidates of seed s are ids[offsets[s] .. offsets[s+1]), nearest
+// first (ties by id), so that clipping can stop at the first bisector too far away.
 struct SeedNeighbors {
   std::vector<std::size_t> offsets;
   std::vector<Index> ids;
@@ -19,7 +24,15 @@ struct SeedNeighbors {
   }
 };
 
-// Throws InvalidArgument for a non-finite seed or for identical seeds (naming the first pair).
-SeedNeighbors delaunay_neighbors(const std::vector<Vec3>& seeds);
+// Throws InvalidArgument for no seeds, a non-finite seed, or identical seeds (naming the
+// first pair).
+void reject_bad_seeds(const std::vector<Vec3>& seeds);
+
+// Each seed's k nearest other seeds (fewer when there are fewer seeds).
+SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const NearestSeed& tree,
+                                std::size_t k);
+
+// Sorts seed ids by squared distance to seed s, ties by id.
+void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> ids);
 
 }  // namespace cvtmesh
