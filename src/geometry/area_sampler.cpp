@@ -16,7 +16,7 @@ AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed) : mesh_(m
   }
 }
 
-Vec3 AreaSampler::operator()(std::uint64_t k) const {
+AreaSampler::Sample AreaSampler::sample(std::uint64_t k) const {
   CounterRng rng(seed_, k);
   const double target = rng.uniform() * cumulative_.back();
   const std::size_t t = std::min<std::size_t>(
@@ -25,7 +25,7 @@ Vec3 AreaSampler::operator()(std::uint64_t k) const {
   const auto [a, b, c] = mesh_.corners(t);
   // Uniform point in a triangle: s = √u1 along the median direction, u2 across.
   const double s = std::sqrt(rng.uniform()), u = rng.uniform();
-  return (1 - s) * a + (s * (1 - u)) * b + (s * u) * c;
+  return {(1 - s) * a + (s * (1 - u)) * b + (s * u) * c, t};
 }
 
 }  // namespace cvtmesh

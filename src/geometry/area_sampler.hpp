@@ -12,7 +12,12 @@ namespace cvtmesh {
 class AreaSampler {
  public:
   AreaSampler(const TriangleMesh& mesh, std::uint64_t seed);
-  Vec3 operator()(std::uint64_t k) const;
+  struct Sample {
+    Vec3 point;
+    std::size_t triangle;  // the triangle it lies on
+  };
+  Sample sample(std::uint64_t k) const;
+  Vec3 operator()(std::uint64_t k) const { return sample(k).point; }
   bool has_area() const { return !cumulative_.empty() && cumulative_.back() > 0; }
 
  private:
