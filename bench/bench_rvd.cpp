@@ -22,6 +22,7 @@
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "support/shapes.hpp"
+#include "support/shared_data.hpp"
 
 namespace {
 
@@ -83,13 +84,8 @@ BENCHMARK(BM_RvdVsDelaunay)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-std::filesystem::path shared_mesh(const char* name) {
-  const char* env = std::getenv("CVTMESH_SHARED_DATA");
-  return std::filesystem::path(env ? env : CVTMESH_SHARED_DATA) / name;
-}
-
 void BM_RvdLargeMesh(benchmark::State& state) {
-  const auto path = shared_mesh("igea.ply");
+  const auto path = testing::shared_data() / "igea.ply";
   if (!std::filesystem::exists(path)) {
     state.SkipWithError("igea.ply not found (set CVTMESH_SHARED_DATA)");
     return;

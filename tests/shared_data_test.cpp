@@ -12,15 +12,11 @@
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
+#include "support/shared_data.hpp"
 #include "support/temp_dir.hpp"
 
 namespace cvtmesh {
 namespace {
-
-std::filesystem::path shared_data() {
-  if (const char* env = std::getenv("CVTMESH_SHARED_DATA")) return env;
-  return CVTMESH_SHARED_DATA;
-}
 
 struct Expected {
   std::string file;
@@ -73,7 +69,7 @@ std::vector<Expected> expected_counts(const std::filesystem::path& readme) {
 }
 
 TEST(SharedData, EveryMeshMatchesTheCountsOfItsReadme) {
-  const auto dir = shared_data();
+  const auto dir = testing::shared_data();
   if (!std::filesystem::exists(dir / "README.md"))
     GTEST_SKIP() << "shared test meshes not found at " << dir
                  << " (clone ../shared beside the repository, or set CVTMESH_SHARED_DATA)";
@@ -96,7 +92,7 @@ TEST(SharedData, EveryMeshMatchesTheCountsOfItsReadme) {
 }
 
 TEST(SharedData, RvdCellsTileEveryMesh) {
-  const auto dir = shared_data();
+  const auto dir = testing::shared_data();
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "shared test meshes not found at " << dir;
   std::size_t meshes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {

@@ -85,7 +85,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
   vertices->excludes(length)->excludes(relative);
   length->excludes(relative);
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
-      ->default_val(40)
+      ->default_val(20)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--optimizer", o->optimizer, "lbfgs or lloyd")
       ->default_val("lbfgs")

@@ -1,0 +1,16 @@
+// Where the shared test meshes live (../shared/data beside the repository, or the
+// CVTMESH_SHARED_DATA environment variable). Tests and benchmarks that need them skip when the
+// directory is absent.
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace cvtmesh::testing {
+
+inline std::filesystem::path shared_data() {
+  if (const char* env = std::getenv("CVTMESH_SHARED_DATA")) return env;
+  return CVTMESH_SHARED_DATA;
+}
+
+}  // namespace cvtmesh::testing
