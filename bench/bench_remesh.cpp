@@ -1,0 +1,203 @@
+// Remeshing benchmarks (issue 4). Every figure that compares is measured in this same run.
+//   BM_Remesh/<mesh>: cvtmesh remesh to 10k vertices with the default settings (20 L-BFGS
+//     iterations of RCVT, then 20 of CCVT): time, iterations, RVD evaluations, time per
+//     iteration, peak memory of the process so far, and the output's quality and Hausdorff
+//     distance to the input.
+//   BM_CgalIsotropic/<mesh>: CGAL's isotropic_remeshing (Botsch-Kobbelt, 3 iterations, as in
+//     CGAL's examples) with the edge length that gives about 10k vertices (calibrated by one
+//     untimed run); the same figures, and time_ratio = ours / CGAL's when BM_Remesh ran first.
+//   BM_LloydVsLbfgs: RCVT of bunny to 2k vertices; L-BFGS for 20 iterations, then Lloyd until
+//     it reaches the same energy: RVD evaluations and seconds of each.
+// Meshes: ../shared/data/{bunny.off, igea.ply}; cases skip when they are absent.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "cvtmesh/hausdorff.hpp"
+#include "cvtmesh/io.hpp"
+#include "cvtmesh/quality.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/repair.hpp"
+#include "cvtmesh/topology.hpp"
+#include "support/shared_data.hpp"
+
+namespace {
+
+using namespace cvtmesh;
+using Clock = std::chrono::steady_clock;
+constexpr std::size_t kVertices = 10'000;
+const char* const kMeshes[] = {"bunny.off", "igea.ply"};
+
+double seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+double peak_memory_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024;  // Linux: kilobytes
+}
+
+const TriangleMesh* load(benchmark::State& state) {
+  static std::map<std::string, TriangleMesh> cache;
+  const std::string name = kMeshes[state.range(0)];
+  state.SetLabel(name);
+  const auto path = testing::shared_data() / name;
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError((path.string() + " not found (set CVTMESH_SHARED_DATA)").c_str());
+    return nullptr;
+  }
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    TriangleMesh mesh = read_mesh(path);
+    repair_mesh(mesh);
+    it = cache.emplace(name, std::move(mesh)).first;
+  }
+  return &it->second;
+}
+
+void report_output(benchmark::State& state, const TriangleMesh& output, const TriangleMesh& input) {
+  const QualityReport q = measure_quality(output);
+  state.counters["vertices"] = static_cast<double>(output.vertices.size());
+  state.counters["q_min"] = q.q_min;
+  state.counters["angle_min_deg"] = q.angle_min_deg;
+  state.counters["pct_below_30"] = q.pct_angle_below_30;
+  state.counters["hausdorff_mean_pct"] =
+      hausdorff_distance(output, input, {.samples = 200'000}).mean_pct();
+  state.counters["same_topology"] =
+      same_topology(analyze_topology(output), analyze_topology(input)) ? 1 : 0;
+}
+
+std::map<std::string, double> our_seconds;  // per mesh, for the ratio against CGAL
+
+void BM_Remesh(benchmark::State& state) {
+  const TriangleMesh* input = load(state);
+  if (!input) return;
+  for (auto _ : state) {
+    RemeshSettings s;
+    s.vertices = kVertices;
+    const auto start = Clock::now();
+    const RemeshResult r = remesh(*input, s);
+    const double total = seconds(start);
+    state.SetIterationTime(total);
+    our_seconds[kMeshes[state.range(0)]] = total;
+    state.counters["time_s"] = total;
+    state.counters["iterations"] = r.iterations;
+    state.counters["rvd_evaluations"] = r.rvd_evaluations;
+    state.counters["s_per_iteration"] = (r.seconds_rcvt + r.seconds_ccvt) / r.iterations;
+    state.counters["peak_mb"] = peak_memory_mb();
+    report_output(state, r.mesh, *input);
+  }
+}
+BENCHMARK(BM_Remesh)->DenseRange(0, 1)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_CgalIsotropic(benchmark::State& state) {
+  const TriangleMesh* input = load(state);
+  if (!input) return;
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const auto to_surface_mesh = [&] {
+    std::vector<Kernel::Point_3> points;
+    for (const Vec3& p : input->vertices) points.emplace_back(p.x, p.y, p.z);
+    std::vector<std::vector<std::size_t>> polygons;
+    for (const auto& t : input->triangles) polygons.push_back({t[0], t[1], t[2]});
+    SurfaceMesh mesh;
+    PMP::orient_polygon_soup(points, polygons);
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    return mesh;
+  };
+  const auto run = [&](SurfaceMesh& mesh, double h) {
+    PMP::isotropic_remeshing(faces(mesh), h, mesh, CGAL::parameters::number_of_iterations(3));
+  };
+  // The edge length of equilateral triangles that cover the area with kVertices vertices,
+  // corrected once by an untimed run for the vertex count it actually gives.
+  double h = std::sqrt(surface_area(*input) / (std::sqrt(3.0) / 2 * kVertices));
+  {
+    SurfaceMesh trial = to_surface_mesh();
+    run(trial, h);
+    h *= std::sqrt(static_cast<double>(trial.number_of_vertices()) / kVertices);
+  }
+  for (auto _ : state) {
+    SurfaceMesh mesh = to_surface_mesh();
+    const auto start = Clock::now();
+    run(mesh, h);
+    const double total = seconds(start);
+    state.SetIterationTime(total);
+    state.counters["time_s"] = total;
+    state.counters["peak_mb"] = peak_memory_mb();
+    if (const auto ours = our_seconds.find(kMeshes[state.range(0)]); ours != our_seconds.end())
+      state.counters["time_ratio"] = ours->second / total;
+    TriangleMesh output;
+    std::map<SurfaceMesh::Vertex_index, Index> index;
+    for (const auto v : mesh.vertices()) {
+      const auto& p = mesh.point(v);
+      index[v] = static_cast<Index>(output.vertices.size());
+      output.vertices.push_back({p.x(), p.y(), p.z()});
+    }
+    for (const auto f : mesh.faces()) {
+      Triangle t{};
+      int k = 0;
+      for (const auto v : vertices_around_face(mesh.halfedge(f), mesh)) t[k++] = index[v];
+      output.triangles.push_back(t);
+    }
+    report_output(state, output, *input);
+  }
+}
+BENCHMARK(BM_CgalIsotropic)
+    ->DenseRange(0, 1)
+    ->UseManualTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+
+void BM_LloydVsLbfgs(benchmark::State& state) {
+  const auto path = testing::shared_data() / "bunny.off";
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("bunny.off not found (set CVTMESH_SHARED_DATA)");
+    return;
+  }
+  TriangleMesh input = read_mesh(path);
+  repair_mesh(input);
+  for (auto _ : state) {
+    RemeshSettings s;
+    s.vertices = 2'000;
+    s.mode = CvtMode::rcvt;
+    s.iterations = 20;
+    auto start = Clock::now();
+    const RemeshResult lbfgs = remesh(input, s);
+    const double lbfgs_s = seconds(start);
+    s.optimizer = Optimizer::lloyd;
+    s.iterations = 300;
+    start = Clock::now();
+    const RemeshResult lloyd = remesh(input, s);
+    const double lloyd_s = seconds(start);
+    // energies[k] follows Lloyd's iteration k + 1, measured by its evaluation k + 2 (the first
+    // evaluates the start).
+    double needed = 0;
+    for (std::size_t k = 0; k < lloyd.energies.size() && needed == 0; ++k)
+      if (lloyd.energies[k] <= lbfgs.energy_final) needed = static_cast<double>(k + 2);
+    state.SetIterationTime(lbfgs_s);
+    state.counters["lbfgs_evaluations"] = lbfgs.rvd_evaluations;
+    state.counters["lbfgs_s"] = lbfgs_s;
+    if (needed == 0) {
+      state.counters["lloyd_not_reached_in"] = lloyd.rvd_evaluations;
+      continue;
+    }
+    state.counters["lloyd_evaluations"] = needed;
+    state.counters["lloyd_s"] = needed * lloyd_s / lloyd.rvd_evaluations;
+    state.counters["evaluation_ratio"] = needed / lbfgs.rvd_evaluations;
+  }
+}
+BENCHMARK(BM_LloydVsLbfgs)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
