@@ -1,6 +1,6 @@
 // The restricted Voronoi diagram (RVD) of seeds on a triangle surface, computed exactly
 // (paper §3): every input triangle is clipped by the Voronoi cells that meet it, found by
-// propagation from the seed nearest to its centroid. Combinatorial decisions use exact
+// propagation from the cell of one of its corners. Combinatorial decisions use exact
 // predicates on the vertices' symbolic definitions, with a symbolic perturbation so that no
 // decision is ever a tie. Works on a triangle soup: no connectivity is needed.
 #pragma once

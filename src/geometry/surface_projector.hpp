@@ -22,10 +22,6 @@ class SurfaceProjector {
   // The same, starting the search from a foot found earlier for a point nearby (much faster
   // when the point has moved little, as seeds do between CVT iterations).
   Foot nearest(const Vec3& p, const Foot& hint) const;
-  double squared_distance(const Vec3& p) const {
-    const Vec3 d = nearest(p).point - p;
-    return dot(d, d);
-  }
 
  private:
   struct Tree;

@@ -1,6 +1,7 @@
-// The RVD traversal (paper §3.1-3.3): per input triangle, a FIFO queue of cells starting from
-// the seed nearest to the centroid; each cell clips the triangle by its bisectors, and a
-// neighbour whose bisector actually cut the polygon joins the queue.
+// The RVD traversal (paper §3.1-3.3): first the cell of each input vertex, exactly; then per
+// input triangle, whole if its corners share a cell, else a FIFO queue of cells starting from
+// its first corner's; each cell clips the triangle by the bisectors within the security
+// radius, and a seed whose bisector actually cut the polygon joins the queue.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -24,7 +25,7 @@ constexpr std::size_t kChunkSize = 1024;
 
 // Nearest seeds stored per seed: enough for nearly every polygon of a centroidal tessellation
 // (about 6 Voronoi neighbours on a surface), few enough to find fast; the rest come from
-// radius searches (see Impl::candidates).
+// radius searches (see Impl::for_candidates).
 constexpr std::size_t kStoredNeighbors = 20;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -42,7 +43,7 @@ struct Scratch {
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
   std::size_t polygons = 0;
-  std::vector<Index> spare;  // candidates from a radius search (Impl::candidates)
+  std::vector<Index> spare;  // candidates from a radius search (Impl::for_candidates)
   std::size_t radius_searches = 0;
 };
 
