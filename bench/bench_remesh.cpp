@@ -48,9 +48,10 @@ double peak_memory_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024;  // Linux: kilobytes
 }
 
-const TriangleMesh* load(benchmark::State& state) {
+// The shared mesh `name`, read and repaired as the command line does (once per run), or null
+// after marking the case skipped when it is absent.
+const TriangleMesh* load(benchmark::State& state, const std::string& name) {
   static std::map<std::string, TriangleMesh> cache;
-  const std::string name = kMeshes[state.range(0)];
   state.SetLabel(name);
   const auto path = testing::shared_data() / name;
   if (!std::filesystem::exists(path)) {
@@ -81,7 +82,7 @@ void report_output(benchmark::State& state, const TriangleMesh& output, const Tr
 std::map<std::string, double> our_seconds;  // per mesh, for the ratio against CGAL
 
 void BM_Remesh(benchmark::State& state) {
-  const TriangleMesh* input = load(state);
+  const TriangleMesh* input = load(state, kMeshes[state.range(0)]);
   if (!input) return;
   for (auto _ : state) {
     RemeshSettings s;
@@ -102,7 +103,7 @@ void BM_Remesh(benchmark::State& state) {
 BENCHMARK(BM_Remesh)->DenseRange(0, 1)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
 
 void BM_CgalIsotropic(benchmark::State& state) {
-  const TriangleMesh* input = load(state);
+  const TriangleMesh* input = load(state, kMeshes[state.range(0)]);
   if (!input) return;
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -161,13 +162,9 @@ BENCHMARK(BM_CgalIsotropic)
     ->Iterations(1);
 
 void BM_LloydVsLbfgs(benchmark::State& state) {
-  const auto path = testing::shared_data() / "bunny.off";
-  if (!std::filesystem::exists(path)) {
-    state.SkipWithError("bunny.off not found (set CVTMESH_SHARED_DATA)");
-    return;
-  }
-  TriangleMesh input = read_mesh(path);
-  repair_mesh(input);
+  const TriangleMesh* bunny = load(state, "bunny.off");
+  if (!bunny) return;
+  const TriangleMesh& input = *bunny;
   for (auto _ : state) {
     RemeshSettings s;
     s.vertices = 2'000;
