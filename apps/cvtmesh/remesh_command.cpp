@@ -2,8 +2,14 @@
 // remeshing by CVT, with the quality report of the result against the input.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
+#include <tuple>
 #include "commands.hpp"
+
 #include "cvtmesh/errors.hpp"
+#include "cvtmesh/features.hpp"
+#include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/io.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
@@ -15,11 +21,23 @@ namespace cvtmesh::cli {
 namespace {
 
 struct RemeshOptions {
-  std::string input, output, optimizer = "lbfgs", mode = "both";
+  std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges;
   RemeshSettings settings;
   int threads = 0;
-  bool quiet = false, json = false;
+  bool quiet = false, json = false, no_features = false;
 };
+
+// Input corners found among the output's vertices at exactly their input position.
+std::size_t corners_kept(const TriangleMesh& input, const Features& f, const TriangleMesh& out) {
+  std::vector<Vec3> at(out.vertices);
+  auto less = [](const Vec3& a, const Vec3& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  };
+  std::sort(at.begin(), at.end(), less);
+  return static_cast<std::size_t>(std::count_if(f.corners.begin(), f.corners.end(), [&](Index c) {
+    return std::binary_search(at.begin(), at.end(), input.vertices[c], less);
+  }));
+}
 
 int run_remesh(RemeshOptions o) {
   const auto threads = limit_threads(o.threads);
@@ -31,6 +49,8 @@ int run_remesh(RemeshOptions o) {
   if (const RepairReport r = repair_mesh(input); r.changed())
     fmt::print(stderr, "{}: repaired: {}\n", o.input, r.summary());
   RemeshSettings& s = o.settings;
+  s.features.sharp_edges = !o.no_features;
+  if (!o.feature_edges.empty()) s.features.user_edges = read_feature_edges(o.feature_edges);
   s.optimizer = o.optimizer == "lloyd" ? Optimizer::lloyd : Optimizer::lbfgs;
   s.mode = o.mode == "rcvt" ? CvtMode::rcvt : o.mode == "ccvt" ? CvtMode::ccvt : CvtMode::both;
   const std::size_t n = requested_vertex_count(input, s);
@@ -45,8 +65,22 @@ int run_remesh(RemeshOptions o) {
   write_mesh(o.output, r.mesh);
 
   MeshReport report = report_mesh(o.output, r.mesh, &input);
+  const double diagonal = bounding_box(input).diagonal();
+  const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
+  const std::size_t corners_out = corners_kept(input, r.features, r.mesh);
   if (o.json) {
     auto& j = report.json;
+    j["feature_edges_in"] = r.features.edges.size();
+    j["feature_curves_in"] = r.features.curves.size();
+    j["corners_in"] = r.features.corners.size();
+    j["corners_out"] = corners_out;
+    j["feature_edges_out"] = r.feature_edges.size();
+    j["feature_edges_missing"] = r.feature_edges_missing;
+    // null when there are input features but no output feature edges (JSON has no infinity).
+    j["feature_hausdorff_max_pct"] =
+        std::isfinite(fd.max) ? nlohmann::ordered_json(100 * fd.max / diagonal) : nullptr;
+    j["feature_hausdorff_mean_pct"] =
+        std::isfinite(fd.mean) ? nlohmann::ordered_json(100 * fd.mean / diagonal) : nullptr;
     j["iterations"] = r.iterations;
     j["rvd_evaluations"] = r.rvd_evaluations;
     j["energy_initial"] = r.energy_initial;
@@ -62,6 +96,13 @@ int run_remesh(RemeshOptions o) {
     fmt::print("{}\n", j.dump(2));
   } else {
     fmt::print("{}", report.text);
+    if (!r.features.empty())
+      fmt::print(
+          "  features  {} edges in {} curves, {}/{} corners kept, {} output feature edges ({} "
+          "missing), distance max {:.4f}% mean {:.4f}% of bbox diagonal\n",
+          r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
+          r.feature_edges.size(), r.feature_edges_missing, 100 * fd.max / diagonal,
+          100 * fd.mean / diagonal);
     fmt::print("  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}\n",
                r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final);
   }
@@ -95,6 +136,15 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::IsMember({"rcvt", "ccvt", "both"}));
   cmd->add_option("--seed", o->settings.seed, "Random seed of the initial sampling")
       ->default_val(1);
+  auto* angle = cmd->add_option("--feature-angle", o->settings.features.angle_deg,
+                                "Sharp edge: its faces' normals differ by more than this (deg)")
+                    ->default_val(60)
+                    ->check(CLI::Range(0.0, 180.0));
+  cmd->add_flag("--no-features", o->no_features,
+                "Keep no sharp edges (boundaries and --feature-edges are still kept)")
+      ->excludes(angle);
+  cmd->add_option("--feature-edges", o->feature_edges,
+                  "File of feature edges to keep: \"a b\" vertex ids per line, # comments");
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
   add_threads_option(*cmd, o->threads);

@@ -4,6 +4,9 @@
 
 #include <cstdint>
 
+#include <vector>
+
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
@@ -32,5 +35,20 @@ struct HausdorffReport {
 // `b` is the reference (its diagonal normalises the percentages). Both meshes must be non-empty.
 HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
                                    const HausdorffSettings& settings = {});
+
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+
+// How closely output feature edges follow the input's feature curves: each input feature edge
+// sampled at spacing at most 1/4000 of the bbox diagonal (and at its ends), each sample's
+// distance to the nearest output feature edge. Max and mean (over samples) are absolute; both
+// are +infinity when there are input features but no output feature edges, 0 when there are
+// no input features.
+struct FeatureDistance {
+  double max = 0, mean = 0;
+};
+FeatureDistance feature_distance(const TriangleMesh& input, const std::vector<Edge>& input_edges,
+                                 const TriangleMesh& output, const std::vector<Edge>& output_edges);
 
 }  // namespace cvtmesh

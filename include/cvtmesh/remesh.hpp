@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
@@ -34,6 +35,9 @@ struct RemeshSettings {
   std::uint64_t seed = 1;           // random initial seeds: same seed, same output
   std::vector<Vec3> initial_seeds;  // if not empty: used instead of random seeds
   std::function<void(const RemeshProgress&)> progress;  // called once per iteration
+  // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
+  // vertices, feature curves chains of output edges. Not applied with mode rcvt.
+  FeatureSettings features;
 };
 
 struct RemeshResult {
@@ -43,7 +47,10 @@ struct RemeshResult {
   double energy_initial = 0, energy_final = 0;
   double gradient_norm_initial = 0, gradient_norm_final = 0;
   double seconds_initialization = 0, seconds_rcvt = 0, seconds_ccvt = 0, seconds_extraction = 0;
-  std::vector<double> energies;  // energy after each accepted iteration, in order
+  std::vector<double> energies;           // energy after each accepted iteration, in order
+  Features features;                      // of the input
+  std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
+  std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks
 };
 
 // The number of vertices the settings ask for: `vertices`, or the count whose equilateral

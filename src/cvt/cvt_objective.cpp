@@ -9,30 +9,59 @@
 
 namespace cvtmesh {
 
-std::vector<Vec3> CvtObjective::project(std::vector<Vec3>& seeds) {
+std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seeds) {
+  using Kind = SeedConstraints::Kind;
   const bool hinted = hints_.size() == seeds.size();
   hints_.resize(seeds.size());
+  std::vector<Vec3> feet(seeds.size());
+  std::vector<Tangent> tangents(seeds.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 256), [&](const auto& r) {
-    for (std::size_t s = r.begin(); s < r.end(); ++s)
-      hints_[s] = hinted ? projector_.nearest(seeds[s], hints_[s]) : projector_.nearest(seeds[s]);
+    for (std::size_t s = r.begin(); s < r.end(); ++s) {
+      const Kind kind = features_ && !features_->empty() ? features_->kind[s] : Kind::surface;
+      if (kind == Kind::corner) {
+        feet[s] = features_->anchor[s];
+        tangents[s] = {{}, kind};
+      } else if (kind == Kind::curve) {
+        const CurveProjector::Foot foot = curves_->nearest(features_->curve[s], seeds[s]);
+        feet[s] = foot.point;
+        tangents[s] = {foot.tangent, kind};
+      } else {
+        hints_[s] = hinted ? projector_.nearest(seeds[s], hints_[s]) : projector_.nearest(seeds[s]);
+        feet[s] = hints_[s].point;
+        tangents[s] = {hints_[s].normal, kind};
+      }
+    }
   });
-  std::vector<Vec3> feet(seeds.size()), normals(seeds.size());
-  for (std::size_t s = 0; s < seeds.size(); ++s) {
-    feet[s] = hints_[s].point;
-    normals[s] = hints_[s].normal;
-  }
+  // Seeds move to their feet, except where that would make two seeds coincide: then the one
+  // of lower priority (corner seeds first, then by id) keeps its position. Repeated, since a
+  // seed kept in place may now coincide with another's foot; it ends, as every round keeps at
+  // least one more seed in place and the incoming seeds are distinct.
+  using Position = std::tuple<double, double, double>;
+  auto position = [](const Vec3& p) { return Position{p.x, p.y, p.z}; };
+  std::vector<bool> moves(seeds.size(), true);
   std::vector<std::size_t> order(seeds.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  auto key = [&](std::size_t s) { return std::tie(feet[s].x, feet[s].y, feet[s].z); };
-  std::sort(order.begin(), order.end(),
-            [&](auto a, auto b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
-  for (std::size_t k = 0; k < order.size(); ++k)
-    if (k == 0 || !(feet[order[k]] == feet[order[k - 1]])) seeds[order[k]] = feet[order[k]];
-  return normals;
+  auto at = [&](std::size_t s) { return moves[s] ? feet[s] : seeds[s]; };
+  auto key = [&](std::size_t s) {
+    return std::make_tuple(position(at(s)), tangents[s].kind != Kind::corner, s);
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    for (std::size_t k = 1; k < order.size(); ++k) {
+      const std::size_t a = order[k - 1], b = order[k];
+      if (!(at(a) == at(b))) continue;
+      moves[moves[b] ? b : a] = false;  // both cannot stay: the incoming seeds are distinct
+      changed = true;
+    }
+  }
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+    if (moves[s]) seeds[s] = feet[s];
+  return tangents;
 }
 
 CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
-  const std::vector<Vec3> normals = constrained_ ? project(seeds) : std::vector<Vec3>{};
+  const std::vector<Tangent> tangents = constrained_ ? project(seeds) : std::vector<Tangent>{};
   ++evaluations_;
   const RestrictedVoronoiDiagram rvd(surface_, seeds);
   CellIntegrator integrator(rvd);
@@ -44,8 +73,19 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
     e.centroids[s] = integrals.mass[s] > 0 ? integrals.centroid(static_cast<Index>(s)) : seeds[s];
   if (constrained_) {
     for (std::size_t s = 0; s < seeds.size(); ++s) {
-      const Vec3& n = normals[s];
-      e.gradient[s] = e.gradient[s] - dot(e.gradient[s], n) * n;
+      Vec3& g = e.gradient[s];
+      const Vec3& d = tangents[s].direction;
+      switch (tangents[s].kind) {
+        case SeedConstraints::Kind::surface:
+          g = g - dot(g, d) * d;
+          break;
+        case SeedConstraints::Kind::curve:
+          g = dot(g, d) * d;
+          break;
+        case SeedConstraints::Kind::corner:
+          g = {};
+          break;
+      }
     }
   }
   return e;

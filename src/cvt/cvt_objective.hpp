@@ -1,19 +1,27 @@
 // The CVT energy F and its gradient as a function of the seeds (paper eq. 3 and 5), one RVD
 // per evaluation. Restricted CVT: seeds free in 3D. Constrained CVT: F is evaluated at the
-// seeds' nearest surface points and the gradient projected on the tangent planes there (eq. 7).
+// seeds' nearest surface points and the gradient projected on the tangent planes there (eq. 7);
+// with features, curve seeds on their curve with the gradient along its tangent, and corner
+// seeds fixed (zero gradient) while their cells still count in F (§4.3).
 #pragma once
 
 #include <vector>
 
 #include "cvtmesh/rvd_consumers.hpp"
+#include "features/feature_seeds.hpp"
 #include "geometry/surface_projector.hpp"
 
 namespace cvtmesh {
 
 class CvtObjective {
  public:
-  CvtObjective(const TriangleMesh& surface, const SurfaceProjector& projector, bool constrained)
-      : surface_(surface), projector_(projector), constrained_(constrained) {}
+  CvtObjective(const TriangleMesh& surface, const SurfaceProjector& projector, bool constrained,
+               const SeedConstraints* features = nullptr, const CurveProjector* curves = nullptr)
+      : surface_(surface),
+        projector_(projector),
+        constrained_(constrained),
+        features_(features),
+        curves_(curves) {}
 
   struct Evaluation {
     double energy;
@@ -24,15 +32,22 @@ class CvtObjective {
   Evaluation operator()(std::vector<Vec3>& seeds);
   int evaluations() const { return evaluations_; }
 
-  // Moves each seed to its nearest surface point and returns the surface normals there. A seed
-  // that would land on a point another seed already occupies (possible at convex corners) stays
-  // where it is, so seeds stay distinct. Each search starts from the seed's previous foot.
-  std::vector<Vec3> project(std::vector<Vec3>& seeds);
+  // Moves each seed to its nearest surface point (curve seeds: curve point; corner seeds: their
+  // corner) and returns, per seed, how to constrain its gradient. A seed that would land on a
+  // point another seed already occupies (possible at convex corners) stays where it is, so seeds
+  // stay distinct; corner seeds win such ties. Each surface search starts from the previous foot.
+  struct Tangent {
+    Vec3 direction;  // surface: the normal; curve: the tangent
+    SeedConstraints::Kind kind;
+  };
+  std::vector<Tangent> project(std::vector<Vec3>& seeds);
 
  private:
   const TriangleMesh& surface_;
   const SurfaceProjector& projector_;
   bool constrained_;
+  const SeedConstraints* features_;
+  const CurveProjector* curves_;
   int evaluations_ = 0;
   std::vector<SurfaceProjector::Foot> hints_;  // the feet of the last projection
 };

@@ -3,11 +3,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include "cvt/minimize.hpp"
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "features/feature_seeds.hpp"
 
 namespace cvtmesh {
 
@@ -20,6 +23,40 @@ double seconds(Clock::time_point since) {
 }
 
 constexpr std::size_t kMaxVertices = 50'000'000;
+
+// Rounds of stray-seed snapping after CCVT (each one a CCVT run); one or two suffice in practice.
+constexpr int kSnapRounds = 3;
+
+// The edge length of N seeds spread evenly over area A as equilateral triangles (about two
+// triangles per vertex): the inverse of requested_vertex_count's formula.
+double edge_length_for(double area, std::size_t n) {
+  return std::sqrt(area / (std::sqrt(3.0) / 2 * static_cast<double>(n)));
+}
+
+// The chain links (seed ids) that are edges of the output, in output vertex ids; the output's
+// vertices are seeds, matched by position (repairs renumber them).
+std::vector<Edge> traced_edges(const std::vector<Edge>& links, const std::vector<Vec3>& seeds,
+                               const TriangleMesh& output) {
+  std::map<std::tuple<double, double, double>, Index> id;
+  for (Index v = 0; v < output.vertices.size(); ++v)
+    id.emplace(std::make_tuple(output.vertices[v].x, output.vertices[v].y, output.vertices[v].z),
+               v);
+  std::vector<Edge> edges;
+  for (const Triangle& t : output.triangles)
+    for (int k = 0; k < 3; ++k)
+      edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
+  std::sort(edges.begin(), edges.end());
+  std::vector<Edge> traced;
+  for (const Edge& link : links) {
+    const Vec3 &a = seeds[link[0]], &b = seeds[link[1]];
+    const auto ia = id.find(std::make_tuple(a.x, a.y, a.z));
+    const auto ib = id.find(std::make_tuple(b.x, b.y, b.z));
+    if (ia == id.end() || ib == id.end()) continue;
+    const Edge e{std::min(ia->second, ib->second), std::max(ia->second, ib->second)};
+    if (std::binary_search(edges.begin(), edges.end(), e)) traced.push_back(e);
+  }
+  return traced;
+}
 
 }  // namespace
 
@@ -57,11 +94,18 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
           ? sample_surface(mesh, requested_vertex_count(mesh, settings), settings.seed)
           : settings.initial_seeds;
   const SurfaceProjector projector(mesh);
+  FeatureSettings feature_settings = settings.features;
+  if (feature_settings.min_sharp_curve_length == 0)
+    feature_settings.min_sharp_curve_length =
+        2 * edge_length_for(surface_area(mesh), seeds.size());  // below the output's resolution
+  result.features = detect_features(mesh, feature_settings);
+  const CurveProjector curves(mesh, result.features);
+  SeedConstraints constraints;
   result.seconds_initialization = seconds(start);
 
   auto run_phase = [&](const char* name, bool constrained, double& phase_seconds) {
     const auto phase_start = Clock::now();
-    CvtObjective objective(mesh, projector, constrained);
+    CvtObjective objective(mesh, projector, constrained, &constraints, &curves);
     const PhaseOptions options{name, settings.iterations, settings.gradient_tolerance,
                                &settings.progress, start};
     const PhaseResult phase = settings.optimizer == Optimizer::lbfgs
@@ -79,16 +123,35 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     phase_seconds = seconds(phase_start);
   };
   if (settings.mode != CvtMode::ccvt) run_phase("rcvt", false, result.seconds_rcvt);
-  if (settings.mode != CvtMode::rcvt) run_phase("ccvt", true, result.seconds_ccvt);
+  if (settings.mode != CvtMode::rcvt) {
+    // The paper's two stages (§4.3): the RCVT spread the seeds; the nearest to the features now
+    // move onto them, and CCVT optimizes with them bound there.
+    const double spacing = edge_length_for(surface_area(mesh), seeds.size());
+    if (!result.features.empty())
+      constraints = place_feature_seeds(seeds, mesh, result.features, curves, spacing);
+    run_phase("ccvt", true, result.seconds_ccvt);
+    // Surface seeds that took over a stretch of a curve join it, and CCVT resumes.
+    for (int round = 0; round < kSnapRounds && !constraints.empty(); ++round) {
+      if (snap_stray_seeds(seeds, constraints, curves, spacing) == 0) break;
+      double more = 0;
+      run_phase("ccvt", true, more);
+      result.seconds_ccvt += more;
+    }
+  }
 
   // Output vertices lie on the surface: project (a no-op after CCVT), then triangulate.
   const auto extraction_start = Clock::now();
-  CvtObjective(mesh, projector, true).project(seeds);
+  CvtObjective(mesh, projector, true, &constraints, &curves).project(seeds);
   const RestrictedVoronoiDiagram rvd(mesh, seeds);
   RestrictedDelaunayBuilder rdt(rvd);
   rvd.traverse(rdt);
   result.mesh = rdt.result();
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
+  if (!constraints.empty()) {
+    const std::vector<Edge> links = feature_chains(seeds, constraints, result.features, curves);
+    result.feature_edges = traced_edges(links, seeds, result.mesh);
+    result.feature_edges_missing = links.size() - result.feature_edges.size();
+  }
   result.seconds_extraction = seconds(extraction_start);
   return result;
 }

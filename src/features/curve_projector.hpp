@@ -1,0 +1,39 @@
+// Nearest points on the feature curves, by arc length: where CCVT keeps its feature seeds
+// (paper §4.3: each feature seed is projected on its curve after every step).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "cvtmesh/features.hpp"
+
+namespace cvtmesh {
+
+class CurveProjector {
+ public:
+  CurveProjector(const TriangleMesh& mesh, const Features& features);
+
+  struct Foot {
+    Vec3 point;
+    Vec3 tangent;      // unit direction of the curve there
+    double arclength;  // from the curve's first vertex
+  };
+  // The nearest point of curve c to p. On an open curve it is kept a hair away from both ends,
+  // which are corners with seeds of their own, so two seeds never coincide.
+  Foot nearest(std::size_t c, const Vec3& p) const;
+  // The point at arc length s along curve c (taken modulo the length on a closed curve).
+  Vec3 at(std::size_t c, double s) const;
+  double length(std::size_t c) const { return curves_[c].arclength.back(); }
+  bool closed(std::size_t c) const { return curves_[c].closed; }
+  std::size_t size() const { return curves_.size(); }
+
+ private:
+  struct Polyline {
+    std::vector<Vec3> points;  // closed curves repeat the first point at the end
+    std::vector<double> arclength;
+    bool closed;
+  };
+  std::vector<Polyline> curves_;
+};
+
+}  // namespace cvtmesh

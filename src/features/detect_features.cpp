@@ -1,0 +1,214 @@
+// Feature edges (boundary, non-manifold, sharp, user-given), chained into curves between
+// corners (paper §4.3: vertices with other than two feature edges, and sharp turns).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/features.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+Edge edge_of(Index a, Index b) {
+  return a < b ? Edge{a, b} : Edge{b, a};
+}
+
+Vec3 unit_normal(const TriangleMesh& mesh, std::size_t t) {
+  const auto [a, b, c] = mesh.corners(t);
+  const Vec3 n = cross(b - a, c - a);
+  const double length = norm(n);
+  return length > 0 ? (1 / length) * n : Vec3{};
+}
+
+// Whether triangle t runs along edge (a, b) from a to b.
+bool runs_forward(const Triangle& t, Index a, Index b) {
+  for (int k = 0; k < 3; ++k)
+    if (t[k] == a && t[(k + 1) % 3] == b) return true;
+  return false;
+}
+
+struct EdgeUse {
+  Edge edge;
+  std::size_t triangle;
+};
+
+std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      uses.push_back({edge_of(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), t});
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.edge < y.edge || (x.edge == y.edge && x.triangle < y.triangle);
+  });
+  return uses;
+}
+
+// Whether the two triangles' normals make an angle above the threshold, their orientations
+// made consistent along the edge first (a mesh read as a soup may not be oriented).
+bool sharp(const TriangleMesh& mesh, const Edge& e, std::size_t t0, std::size_t t1,
+           double cos_threshold) {
+  const Vec3 n0 = unit_normal(mesh, t0);
+  Vec3 n1 = unit_normal(mesh, t1);
+  if (runs_forward(mesh.triangles[t0], e[0], e[1]) == runs_forward(mesh.triangles[t1], e[0], e[1]))
+    n1 = -1.0 * n1;
+  if (dot(n0, n0) == 0 || dot(n1, n1) == 0) return false;  // no normal: no angle
+  return dot(n0, n1) < cos_threshold;
+}
+
+// The feature edges around each vertex, as a compressed adjacency list.
+struct Adjacency {
+  std::vector<std::size_t> start;
+  std::vector<Index> other;
+  std::size_t degree(Index v) const { return start[v + 1] - start[v]; }
+};
+
+Adjacency adjacency(std::size_t vertices, const std::vector<Edge>& edges) {
+  Adjacency a;
+  a.start.assign(vertices + 1, 0);
+  for (const Edge& e : edges) ++a.start[e[0] + 1], ++a.start[e[1] + 1];
+  for (std::size_t v = 0; v < vertices; ++v) a.start[v + 1] += a.start[v];
+  a.other.resize(2 * edges.size());
+  std::vector<std::size_t> fill(a.start.begin(), a.start.end() - 1);
+  for (const Edge& e : edges) a.other[fill[e[0]]++] = e[1], a.other[fill[e[1]]++] = e[0];
+  for (std::size_t v = 0; v < vertices; ++v)
+    std::sort(a.other.begin() + static_cast<std::ptrdiff_t>(a.start[v]),
+              a.other.begin() + static_cast<std::ptrdiff_t>(a.start[v + 1]));
+  return a;
+}
+
+// A vertex with two feature edges where the curve turns by more than the threshold.
+bool sharp_turn(const TriangleMesh& mesh, const Adjacency& adj, Index v, double cos_threshold) {
+  const Vec3& p = mesh.vertices[v];
+  const Vec3 in = p - mesh.vertices[adj.other[adj.start[v]]];
+  const Vec3 out = mesh.vertices[adj.other[adj.start[v] + 1]] - p;
+  const double lengths = norm(in) * norm(out);
+  return lengths > 0 && dot(in, out) < cos_threshold * lengths;
+}
+
+// Corners and curves of the feature edges f.edges.
+void chain(const TriangleMesh& mesh, double cos_threshold, Features& f) {
+  f.corners.clear();
+  f.curves.clear();
+  const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
+  std::vector<bool> corner(mesh.vertices.size(), false);
+  for (Index v = 0; v < mesh.vertices.size(); ++v) {
+    const std::size_t d = adj.degree(v);
+    corner[v] = (d > 0 && d != 2) || (d == 2 && sharp_turn(mesh, adj, v, cos_threshold));
+    if (corner[v]) f.corners.push_back(v);
+  }
+
+  // Chains: from each corner along each of its edges; what is left are loops without corners.
+  std::vector<bool> used(adj.other.size(), false);  // per adjacency slot (directed edge)
+  auto slot = [&](Index from, Index to) {
+    const auto first = adj.other.begin() + static_cast<std::ptrdiff_t>(adj.start[from]);
+    const auto last = adj.other.begin() + static_cast<std::ptrdiff_t>(adj.start[from + 1]);
+    return adj.start[from] + static_cast<std::size_t>(std::lower_bound(first, last, to) - first);
+  };
+  auto walk = [&](Index from, Index to) {
+    FeatureCurve c;
+    c.vertices.push_back(from);
+    for (;;) {
+      used[slot(from, to)] = used[slot(to, from)] = true;
+      if (corner[to]) {
+        c.vertices.push_back(to);
+        return c;
+      }
+      if (to == c.vertices.front()) {  // back at the start of a loop
+        c.closed = true;
+        return c;
+      }
+      c.vertices.push_back(to);
+      const std::size_t s = adj.start[to];
+      const Index next = adj.other[s] == from ? adj.other[s + 1] : adj.other[s];
+      from = to, to = next;
+    }
+  };
+  for (Index v : f.corners)
+    for (std::size_t s = adj.start[v]; s < adj.start[v + 1]; ++s)
+      if (!used[s]) f.curves.push_back(walk(v, adj.other[s]));
+  for (Index v = 0; v < mesh.vertices.size(); ++v)
+    for (std::size_t s = adj.start[v]; s < adj.start[v + 1]; ++s)
+      if (!used[s]) f.curves.push_back(walk(v, adj.other[s]));
+}
+
+double curve_length(const TriangleMesh& mesh, const FeatureCurve& c) {
+  double length = 0;
+  for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
+    length += distance(mesh.vertices[c.vertices[k]], mesh.vertices[c.vertices[k + 1]]);
+  if (c.closed) length += distance(mesh.vertices[c.vertices.back()], mesh.vertices[c.vertices[0]]);
+  return length;
+}
+
+}  // namespace
+
+Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settings) {
+  if (settings.sharp_edges && !(settings.angle_deg >= 0 && settings.angle_deg <= 180))
+    throw InvalidArgument("the feature angle must be between 0 and 180 degrees");
+  const double cos_threshold = std::cos(settings.angle_deg * std::numbers::pi / 180);
+  Features f;
+  std::vector<Edge> sharp_edges;  // kept for being sharp, and for nothing else
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  for (std::size_t k = 0; k < uses.size();) {
+    std::size_t end = k;
+    while (end < uses.size() && uses[end].edge == uses[k].edge) ++end;
+    const std::size_t count = end - k;
+    if (count != 2) {
+      f.edges.push_back(uses[k].edge);
+    } else if (settings.sharp_edges &&
+               sharp(mesh, uses[k].edge, uses[k].triangle, uses[k + 1].triangle, cos_threshold)) {
+      f.edges.push_back(uses[k].edge);
+      sharp_edges.push_back(uses[k].edge);
+    }
+    k = end;
+  }
+  for (const Edge& given : settings.user_edges) {
+    const auto n = mesh.vertices.size();
+    if (given[0] >= n || given[1] >= n)
+      throw InvalidArgument("feature edge " + std::to_string(given[0]) + " " +
+                            std::to_string(given[1]) + ": vertex id out of range (the mesh has " +
+                            std::to_string(n) + " vertices)");
+    const Edge e = edge_of(given[0], given[1]);
+    const auto used = std::lower_bound(uses.begin(), uses.end(), e,
+                                       [](const EdgeUse& u, const Edge& x) { return u.edge < x; });
+    if (used == uses.end() || used->edge != e)
+      throw InvalidArgument("feature edge " + std::to_string(given[0]) + " " +
+                            std::to_string(given[1]) + " is not an edge of the mesh");
+    f.edges.push_back(e);
+    std::erase(sharp_edges, e);
+  }
+  auto sharp_only = [&](const Edge& e) {
+    return std::binary_search(sharp_edges.begin(), sharp_edges.end(), e);
+  };
+  std::sort(f.edges.begin(), f.edges.end());
+  f.edges.erase(std::unique(f.edges.begin(), f.edges.end()), f.edges.end());
+
+  chain(mesh, cos_threshold, f);
+  if (settings.min_sharp_curve_length > 0) {
+    // Short curves of sharp edges only (no boundary, non-manifold or user edge) go, and the
+    // rest is chained again: a corner of a dropped curve may be an ordinary curve vertex now.
+    std::vector<Edge> dropped;
+    for (const FeatureCurve& c : f.curves) {
+      if (curve_length(mesh, c) >= settings.min_sharp_curve_length) continue;
+      std::vector<Edge> edges;
+      for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
+        edges.push_back(edge_of(c.vertices[k], c.vertices[k + 1]));
+      if (c.closed) edges.push_back(edge_of(c.vertices.back(), c.vertices[0]));
+      if (std::all_of(edges.begin(), edges.end(), [&](const Edge& e) { return sharp_only(e); }))
+        dropped.insert(dropped.end(), edges.begin(), edges.end());
+    }
+    if (!dropped.empty()) {
+      std::sort(dropped.begin(), dropped.end());
+      std::erase_if(f.edges, [&](const Edge& e) {
+        return std::binary_search(dropped.begin(), dropped.end(), e);
+      });
+      chain(mesh, cos_threshold, f);
+    }
+  }
+  return f;
+}
+
+}  // namespace cvtmesh

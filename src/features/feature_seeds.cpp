@@ -1,0 +1,155 @@
+#include "features/feature_seeds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "cvtmesh/errors.hpp"
+#include "voronoi/nearest_seed.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// How many seeds go inside curve c (its corners not counted).
+std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
+                         double spacing) {
+  const auto n = static_cast<std::size_t>(std::llround(curves.length(c) / spacing));
+  if (curves.closed(c)) return std::max<std::size_t>(n, 3);
+  const auto& v = f.curves[c].vertices;
+  if (v.front() == v.back()) return std::max<std::size_t>(n, 3) - 1;  // a loop through a corner
+  return n > 0 ? n - 1 : 0;
+}
+
+}  // namespace
+
+SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh& mesh,
+                                    const Features& features, const CurveProjector& curves,
+                                    double spacing) {
+  struct Wanted {
+    Vec3 point;
+    SeedConstraints::Kind kind;
+    std::uint32_t curve;
+  };
+  std::vector<Wanted> wanted;
+  for (Index v : features.corners)
+    wanted.push_back({mesh.vertices[v], SeedConstraints::Kind::corner, 0});
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    const std::size_t n = seeds_inside(curves, features, c, spacing);
+    // Evenly spaced by arc length; a loop's seeds start half a step from its first vertex.
+    const double step = curves.length(c) / static_cast<double>(curves.closed(c) ? n : n + 1);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double s = curves.closed(c) ? (static_cast<double>(k) + 0.5) * step
+                                        : static_cast<double>(k + 1) * step;
+      wanted.push_back(
+          {curves.at(c, s), SeedConstraints::Kind::curve, static_cast<std::uint32_t>(c)});
+    }
+  }
+  // Points wanted twice (curves that overlap in space) are wanted once: seeds must be distinct.
+  std::set<std::tuple<double, double, double>> seen;
+  std::erase_if(wanted, [&](const Wanted& w) {
+    return !seen.insert(std::make_tuple(w.point.x, w.point.y, w.point.z)).second;
+  });
+  if (wanted.size() >= seeds.size())
+    throw InvalidArgument("the sharp features need " + std::to_string(wanted.size()) +
+                          " vertices on their own, and the output has " +
+                          std::to_string(seeds.size()) +
+                          ": ask for more vertices, a larger feature angle, or no features");
+
+  SeedConstraints result;
+  result.kind.assign(seeds.size(), SeedConstraints::Kind::surface);
+  result.curve.assign(seeds.size(), 0);
+  result.anchor.assign(seeds.size(), {});
+  const NearestSeed tree(seeds);
+  std::vector<bool> taken(seeds.size(), false);
+  std::vector<Index> near;
+  for (const Wanted& w : wanted) {
+    // The nearest seed not taken: widen the search until one turns up (it must: fewer wanted
+    // points than seeds).
+    Index chosen = 0;
+    for (std::size_t k = 8;; k *= 4) {
+      tree.nearest(w.point, k, near);
+      std::sort(near.begin(), near.end(), [&](Index a, Index b) {
+        const double da = dot(seeds[a] - w.point, seeds[a] - w.point);
+        const double db = dot(seeds[b] - w.point, seeds[b] - w.point);
+        return da < db || (da == db && a < b);
+      });
+      const auto free = std::find_if(near.begin(), near.end(), [&](Index s) { return !taken[s]; });
+      if (free != near.end()) {
+        chosen = *free;
+        break;
+      }
+    }
+    taken[chosen] = true;
+    seeds[chosen] = w.point;
+    result.kind[chosen] = w.kind;
+    result.curve[chosen] = w.curve;
+    result.anchor[chosen] = w.point;
+    if (w.kind == SeedConstraints::Kind::corner) result.corner_seed.push_back(chosen);
+  }
+  return result;
+}
+
+std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
+                             const CurveProjector& curves, double spacing) {
+  const NearestSeed tree(seeds);
+  constexpr auto kNone = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> joins(seeds.size(), kNone);  // per stray seed: the curve it joins
+  std::vector<double> d2(seeds.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const double length = curves.length(k);
+    const auto n = static_cast<std::size_t>(std::ceil(8 * length / spacing)) + 1;
+    for (std::size_t i = 0; i <= n; ++i) {
+      const Vec3 p = curves.at(k, length * static_cast<double>(i) / static_cast<double>(n));
+      const Index s = tree(p);
+      const double d = dot(seeds[s] - p, seeds[s] - p);
+      if (c.kind[s] == SeedConstraints::Kind::surface && d < d2[s])
+        d2[s] = d, joins[s] = static_cast<std::uint32_t>(k);
+    }
+  }
+  std::set<std::tuple<double, double, double>> occupied;
+  for (const Vec3& p : seeds) occupied.insert(std::make_tuple(p.x, p.y, p.z));
+  std::size_t snapped = 0;
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    if (joins[s] == kNone) continue;
+    const Vec3 p = curves.nearest(joins[s], seeds[s]).point;
+    if (!occupied.insert(std::make_tuple(p.x, p.y, p.z)).second) continue;  // seeds stay distinct
+    seeds[s] = p;
+    c.kind[s] = SeedConstraints::Kind::curve;
+    c.curve[s] = joins[s];
+    ++snapped;
+  }
+  return snapped;
+}
+
+std::vector<Edge> feature_chains(const std::vector<Vec3>& seeds, const SeedConstraints& c,
+                                 const Features& features, const CurveProjector& curves) {
+  std::vector<std::vector<std::pair<double, Index>>> along(curves.size());
+  for (Index s = 0; s < seeds.size(); ++s)
+    if (c.kind[s] == SeedConstraints::Kind::curve)
+      along[c.curve[s]].push_back({curves.nearest(c.curve[s], seeds[s]).arclength, s});
+  auto corner_seed = [&](Index vertex) {
+    const auto at = std::lower_bound(features.corners.begin(), features.corners.end(), vertex);
+    return c.corner_seed[static_cast<std::size_t>(at - features.corners.begin())];
+  };
+  std::vector<Edge> edges;
+  auto link = [&](Index a, Index b) { edges.push_back(a < b ? Edge{a, b} : Edge{b, a}); };
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    std::sort(along[k].begin(), along[k].end());
+    std::vector<Index> chain;
+    const auto& v = features.curves[k].vertices;
+    if (!curves.closed(k)) chain.push_back(corner_seed(v.front()));
+    for (const auto& [s, seed] : along[k]) chain.push_back(seed);
+    if (!curves.closed(k)) chain.push_back(corner_seed(v.back()));
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i) link(chain[i], chain[i + 1]);
+    if (curves.closed(k) && chain.size() > 2) link(chain.back(), chain.front());
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+}  // namespace cvtmesh

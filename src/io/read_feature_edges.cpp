@@ -1,0 +1,34 @@
+// The user's feature-edge list: "a b" per line, vertex ids of the input mesh.
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/features.hpp"
+
+namespace cvtmesh {
+
+std::vector<Edge> read_feature_edges(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": cannot open the feature-edge file");
+  std::vector<Edge> edges;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream fields(line);
+    std::string first;
+    if (!(fields >> first) || first[0] == '#') continue;
+    fields.clear();
+    fields.seekg(0);
+    long long a = -1, b = -1;
+    std::string rest;
+    if (!(fields >> a >> b) || (fields >> rest) || a < 0 || b < 0 || a > 0xFFFFFFFELL ||
+        b > 0xFFFFFFFELL || a == b)
+      throw InputError(path.string() + ":" + std::to_string(number) +
+                       ": expected two different vertex ids, got \"" + line + "\"");
+    edges.push_back({static_cast<Index>(a), static_cast<Index>(b)});
+  }
+  if (in.bad()) throw InputError(path.string() + ": read error");
+  return edges;
+}
+
+}  // namespace cvtmesh
