@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+
 #include "cvtmesh/io.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
@@ -350,6 +352,39 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_LT(j["energy_final"].get<double>(), j["energy_initial"].get<double>());
   EXPECT_EQ(read_mesh(dir / "out.ply").vertices.size(), j["vertices"].get<std::size_t>());
+}
+
+TEST(CliRemesh, FeatureKeysFlagsAndEdgeFile) {
+  TempDir dir;
+  write_mesh(dir / "cube.off", cube(6));
+  const std::string io = quoted(dir / "cube.off") + " " + quoted(dir / "out.off");
+  auto json = [&](const std::string& flags) {
+    const CliRun r = run_cli(dir, "remesh --json --quiet --vertices 600 " + io + " " + flags);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto kept = json("");
+  for (const char* key : {"feature_edges_in", "corners_in", "corners_out",
+                          "feature_hausdorff_max_pct", "feature_edges_missing"})
+    EXPECT_TRUE(kept.contains(key)) << key;
+  EXPECT_EQ(kept["corners_in"], 8);
+  EXPECT_EQ(kept["corners_out"], 8);
+  EXPECT_EQ(kept["feature_edges_missing"], 0);
+  EXPECT_LT(kept["feature_hausdorff_max_pct"].get<double>(), 1e-6);
+  EXPECT_EQ(json("--no-features")["feature_edges_in"], 0);
+  EXPECT_EQ(json("--feature-angle 100")["feature_edges_in"], 0);
+
+  std::ofstream(dir / "edges.txt") << "# one edge\n0 99999\n";
+  const CliRun bad =
+      run_cli(dir, "remesh --vertices 600 " + io + " --feature-edges " + quoted(dir / "edges.txt"));
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("edges.txt: feature edge 0 99999: vertex id out of range"),
+            std::string::npos)
+      << bad.err;
+  std::ofstream(dir / "garbage.txt") << "0 1 2\n";
+  const CliRun garbage = run_cli(
+      dir, "remesh --vertices 600 " + io + " --feature-edges " + quoted(dir / "garbage.txt"));
+  EXPECT_NE(garbage.err.find("garbage.txt:1:"), std::string::npos) << garbage.err;
 }
 
 TEST(CliRemesh, ProgressGoesToStderr) {

@@ -50,7 +50,14 @@ int run_remesh(RemeshOptions o) {
     fmt::print(stderr, "{}: repaired: {}\n", o.input, r.summary());
   RemeshSettings& s = o.settings;
   s.features.sharp_edges = !o.no_features;
-  if (!o.feature_edges.empty()) s.features.user_edges = read_feature_edges(o.feature_edges);
+  if (!o.feature_edges.empty()) {
+    s.features.user_edges = read_feature_edges(o.feature_edges);
+    try {  // checked here, to name the file in the error
+      detect_features(input, s.features);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(o.feature_edges + ": " + e.what());
+    }
+  }
   s.optimizer = o.optimizer == "lloyd" ? Optimizer::lloyd : Optimizer::lbfgs;
   s.mode = o.mode == "rcvt" ? CvtMode::rcvt : o.mode == "ccvt" ? CvtMode::ccvt : CvtMode::both;
   const std::size_t n = requested_vertex_count(input, s);

@@ -128,6 +128,49 @@ TriangleMesh disk(int rings, int sectors) {
   return m;
 }
 
+TriangleMesh hemisphere(int rings, int sectors) {
+  TriangleMesh m;
+  m.vertices.push_back({0, 0, 1});
+  const double tau = 2 * std::numbers::pi;
+  for (int k = 1; k <= rings; ++k) {
+    const double polar = tau / 4 * k / rings;
+    for (int s = 0; s < sectors; ++s) {
+      const double a = tau * s / sectors;
+      m.vertices.push_back(
+          {std::sin(polar) * std::cos(a), std::sin(polar) * std::sin(a), std::cos(polar)});
+    }
+  }
+  // The same connectivity as the disk: ring k of the disk is latitude k here.
+  m.triangles = disk(rings, sectors).triangles;
+  return m;
+}
+
+TriangleMesh cylinder(int rings, int sectors) {
+  TriangleMesh m;
+  const double tau = 2 * std::numbers::pi;
+  for (int k = 0; k <= rings; ++k) {
+    for (int s = 0; s < sectors; ++s) {
+      const double a = tau * s / sectors;
+      m.vertices.push_back({std::cos(a), std::sin(a), -1 + 2.0 * k / rings});
+    }
+  }
+  const auto bottom = static_cast<Index>(m.vertices.size());
+  m.vertices.push_back({0, 0, -1});
+  m.vertices.push_back({0, 0, 1});
+  auto id = [&](int k, int s) { return static_cast<Index>(k * sectors + (s % sectors)); };
+  for (int k = 0; k < rings; ++k) {
+    for (int s = 0; s < sectors; ++s) {
+      m.triangles.push_back({id(k, s), id(k, s + 1), id(k + 1, s + 1)});
+      m.triangles.push_back({id(k, s), id(k + 1, s + 1), id(k + 1, s)});
+    }
+  }
+  for (int s = 0; s < sectors; ++s) {
+    m.triangles.push_back({bottom, id(0, s + 1), id(0, s)});
+    m.triangles.push_back({bottom + 1, id(rings, s), id(rings, s + 1)});
+  }
+  return m;
+}
+
 TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b) {
   TriangleMesh m = a;
   const Index shift = static_cast<Index>(a.vertices.size());

@@ -19,6 +19,14 @@ TriangleMesh cube(int n);
 // one boundary loop, Euler characteristic 1.
 TriangleMesh disk(int rings, int sectors);
 
+// Unit upper hemisphere: a pole vertex and `rings` latitudes of `sectors` vertices down to the
+// equator; open, one boundary loop, Euler characteristic 1.
+TriangleMesh hemisphere(int rings, int sectors);
+
+// Closed cylinder of radius 1 around z, from z = -1 to 1: side grid of `rings` × `sectors`
+// quads, each cap a fan around its centre; genus 0, sharp 90° rims.
+TriangleMesh cylinder(int rings, int sectors);
+
 // Both meshes in one, `b` after `a` (indices of `b` shifted).
 TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b);
 
