@@ -21,6 +21,7 @@ namespace cvtmesh {
 namespace {
 
 using testing::shared_data;
+using testing::shared_mesh;
 
 TEST(Features, CubeHasTwelveCreasesAndEightCorners) {
   const Features f = detect_features(testing::cube(4), {});
@@ -209,12 +210,6 @@ TEST(RemeshFeatures, ClosedCylinderKeepsItsRims) {
   EXPECT_EQ(r.feature_edges_missing, 0u);
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(cylinder)));
   EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 25.0);
-}
-
-TriangleMesh shared_mesh(const char* name) {
-  TriangleMesh mesh = read_mesh(shared_data() / name);
-  repair_mesh(mesh);  // as the command line does
-  return mesh;
 }
 
 TEST(RemeshFeaturesSharedData, FandiskAt3kMeetsThePapersTable1) {

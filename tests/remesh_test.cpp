@@ -49,12 +49,6 @@ TEST(Remesh, TorusBecomesWellShapedAndKeepsItsTopology) {
   expect_good_remesh(torus(1, 0.4, 160, 64), 2500);
 }
 
-TriangleMesh shared_mesh(const char* name) {
-  TriangleMesh mesh = read_mesh(shared_data() / name);
-  repair_mesh(mesh);  // as the command line does
-  return mesh;
-}
-
 TEST(RemeshSharedData, BunnyAt10kVerticesMeetsTheTargets) {
   if (!std::filesystem::exists(shared_data() / "bunny.off"))
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();

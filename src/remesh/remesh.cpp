@@ -94,10 +94,10 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
           ? sample_surface(mesh, requested_vertex_count(mesh, settings), settings.seed)
           : settings.initial_seeds;
   const SurfaceProjector projector(mesh);
+  const double spacing = edge_length_for(surface_area(mesh), seeds.size());
   FeatureSettings feature_settings = settings.features;
   if (feature_settings.min_sharp_curve_length == 0)
-    feature_settings.min_sharp_curve_length =
-        2 * edge_length_for(surface_area(mesh), seeds.size());  // below the output's resolution
+    feature_settings.min_sharp_curve_length = 2 * spacing;  // below the output's resolution
   result.features = detect_features(mesh, feature_settings);
   const CurveProjector curves(mesh, result.features);
   SeedConstraints constraints;
@@ -126,7 +126,6 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   if (settings.mode != CvtMode::rcvt) {
     // The paper's two stages (§4.3): the RCVT spread the seeds; the nearest to the features now
     // move onto them, and CCVT optimizes with them bound there.
-    const double spacing = edge_length_for(surface_area(mesh), seeds.size());
     if (!result.features.empty())
       constraints = place_feature_seeds(seeds, mesh, result.features, curves, spacing);
     run_phase("ccvt", true, result.seconds_ccvt);
