@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include "commands.hpp"
 
 #include "cvtmesh/errors.hpp"
@@ -30,12 +29,9 @@ struct RemeshOptions {
 // Input corners found among the output's vertices at exactly their input position.
 std::size_t corners_kept(const TriangleMesh& input, const Features& f, const TriangleMesh& out) {
   std::vector<Vec3> at(out.vertices);
-  auto less = [](const Vec3& a, const Vec3& b) {
-    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-  };
-  std::sort(at.begin(), at.end(), less);
+  std::sort(at.begin(), at.end());
   return static_cast<std::size_t>(std::count_if(f.corners.begin(), f.corners.end(), [&](Index c) {
-    return std::binary_search(at.begin(), at.end(), input.vertices[c], less);
+    return std::binary_search(at.begin(), at.end(), input.vertices[c]);
   }));
 }
 

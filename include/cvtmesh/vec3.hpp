@@ -19,6 +19,9 @@ struct Vec3 {
   }
   friend constexpr Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
   friend constexpr bool operator==(const Vec3&, const Vec3&) = default;
+  // Lexicographic (x, then y, then z): to sort points, find exact duplicates, key maps by
+  // position.
+  friend constexpr auto operator<=>(const Vec3&, const Vec3&) = default;
 };
 
 constexpr double dot(const Vec3& a, const Vec3& b) {

@@ -15,9 +15,10 @@ std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seed
   hints_.resize(seeds.size());
   std::vector<Vec3> feet(seeds.size());
   std::vector<Tangent> tangents(seeds.size());
+  const bool featured = features_ && !features_->empty();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 256), [&](const auto& r) {
     for (std::size_t s = r.begin(); s < r.end(); ++s) {
-      const Kind kind = features_ && !features_->empty() ? features_->kind[s] : Kind::surface;
+      const Kind kind = featured ? features_->kind[s] : Kind::surface;
       if (kind == Kind::corner) {
         feet[s] = features_->anchor[s];
         tangents[s] = {{}, kind};
@@ -36,14 +37,12 @@ std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seed
   // of lower priority (corner seeds first, then by id) keeps its position. Repeated, since a
   // seed kept in place may now coincide with another's foot; it ends, as every round keeps at
   // least one more seed in place and the incoming seeds are distinct.
-  using Position = std::tuple<double, double, double>;
-  auto position = [](const Vec3& p) { return Position{p.x, p.y, p.z}; };
   std::vector<bool> moves(seeds.size(), true);
   std::vector<std::size_t> order(seeds.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   auto at = [&](std::size_t s) { return moves[s] ? feet[s] : seeds[s]; };
   auto key = [&](std::size_t s) {
-    return std::make_tuple(position(at(s)), tangents[s].kind != Kind::corner, s);
+    return std::make_tuple(at(s), tangents[s].kind != Kind::corner, s);
   };
   for (bool changed = true; changed;) {
     changed = false;

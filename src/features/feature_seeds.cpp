@@ -5,7 +5,6 @@
 #include <limits>
 #include <set>
 #include <string>
-#include <tuple>
 
 #include "cvtmesh/errors.hpp"
 #include "voronoi/nearest_seed.hpp"
@@ -49,10 +48,8 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
     }
   }
   // Points wanted twice (curves that overlap in space) are wanted once: seeds must be distinct.
-  std::set<std::tuple<double, double, double>> seen;
-  std::erase_if(wanted, [&](const Wanted& w) {
-    return !seen.insert(std::make_tuple(w.point.x, w.point.y, w.point.z)).second;
-  });
+  std::set<Vec3> seen;
+  std::erase_if(wanted, [&](const Wanted& w) { return !seen.insert(w.point).second; });
   if (wanted.size() >= seeds.size())
     throw InvalidArgument("the sharp features need " + std::to_string(wanted.size()) +
                           " vertices on their own, and the output has " +
@@ -110,13 +107,12 @@ std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
         d2[s] = d, joins[s] = static_cast<std::uint32_t>(k);
     }
   }
-  std::set<std::tuple<double, double, double>> occupied;
-  for (const Vec3& p : seeds) occupied.insert(std::make_tuple(p.x, p.y, p.z));
+  std::set<Vec3> occupied(seeds.begin(), seeds.end());
   std::size_t snapped = 0;
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     if (joins[s] == kNone) continue;
     const Vec3 p = curves.nearest(joins[s], seeds[s]).point;
-    if (!occupied.insert(std::make_tuple(p.x, p.y, p.z)).second) continue;  // seeds stay distinct
+    if (!occupied.insert(p).second) continue;  // seeds stay distinct
     seeds[s] = p;
     c.kind[s] = SeedConstraints::Kind::curve;
     c.curve[s] = joins[s];

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <numeric>
 #include <string>
-#include <tuple>
 
 #include "cvtmesh/repair.hpp"
 
@@ -35,9 +34,7 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh) {
   const auto& p = mesh.vertices;
   std::vector<Index> order(p.size());
   std::iota(order.begin(), order.end(), Index{0});
-  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
-    return std::tie(p[a].x, p[a].y, p[a].z) < std::tie(p[b].x, p[b].y, p[b].z);
-  });
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return p[a] < p[b]; });
   // Each run of equal points maps to its first vertex in file order (stable sort keeps it first).
   std::vector<Index> representative(p.size());
   std::vector<bool> keep(p.size(), true);

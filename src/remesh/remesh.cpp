@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <tuple>
 
 #include "cvt/minimize.hpp"
 #include "cvtmesh/errors.hpp"
@@ -37,10 +36,8 @@ double edge_length_for(double area, std::size_t n) {
 // vertices are seeds, matched by position (repairs renumber them).
 std::vector<Edge> traced_edges(const std::vector<Edge>& links, const std::vector<Vec3>& seeds,
                                const TriangleMesh& output) {
-  std::map<std::tuple<double, double, double>, Index> id;
-  for (Index v = 0; v < output.vertices.size(); ++v)
-    id.emplace(std::make_tuple(output.vertices[v].x, output.vertices[v].y, output.vertices[v].z),
-               v);
+  std::map<Vec3, Index> id;
+  for (Index v = 0; v < output.vertices.size(); ++v) id.emplace(output.vertices[v], v);
   std::vector<Edge> edges;
   for (const Triangle& t : output.triangles)
     for (int k = 0; k < 3; ++k)
@@ -48,9 +45,7 @@ std::vector<Edge> traced_edges(const std::vector<Edge>& links, const std::vector
   std::sort(edges.begin(), edges.end());
   std::vector<Edge> traced;
   for (const Edge& link : links) {
-    const Vec3 &a = seeds[link[0]], &b = seeds[link[1]];
-    const auto ia = id.find(std::make_tuple(a.x, a.y, a.z));
-    const auto ib = id.find(std::make_tuple(b.x, b.y, b.z));
+    const auto ia = id.find(seeds[link[0]]), ib = id.find(seeds[link[1]]);
     if (ia == id.end() || ib == id.end()) continue;
     const Edge e{std::min(ia->second, ib->second), std::max(ia->second, ib->second)};
     if (std::binary_search(edges.begin(), edges.end(), e)) traced.push_back(e);

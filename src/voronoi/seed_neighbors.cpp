@@ -8,7 +8,6 @@
 #include <cmath>
 #include <numeric>
 #include <string>
-#include <tuple>
 
 #include "cvtmesh/errors.hpp"
 
@@ -23,9 +22,9 @@ void reject_bad_seeds(const std::vector<Vec3>& seeds) {
   }
   std::vector<Index> order(seeds.size());
   std::iota(order.begin(), order.end(), Index{0});
-  auto key = [&](Index s) { return std::tie(seeds[s].x, seeds[s].y, seeds[s].z); };
-  std::sort(order.begin(), order.end(),
-            [&](Index a, Index b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return seeds[a] < seeds[b] || (seeds[a] == seeds[b] && a < b);
+  });
   for (std::size_t k = 1; k < order.size(); ++k)
     if (seeds[order[k]] == seeds[order[k - 1]])
       throw InvalidArgument("seeds " + std::to_string(order[k - 1]) + " and " +
