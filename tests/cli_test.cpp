@@ -345,9 +345,10 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   EXPECT_EQ(r.err, "");  // --quiet
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : kRequiredKeys) EXPECT_TRUE(j.contains(key)) << key;
-  for (const char* key : {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct",
-                          "same_topology", "iterations", "rvd_evaluations", "energy_initial",
-                          "energy_final", "gradient_norm_final", "time_s", "timings"})
+  for (const char* key :
+       {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct", "same_topology",
+        "iterations", "rvd_evaluations", "energy_initial", "energy_final", "gradient_norm_final",
+        "defects_polished", "polish_rounds", "time_s", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_LT(j["energy_final"].get<double>(), j["energy_initial"].get<double>());

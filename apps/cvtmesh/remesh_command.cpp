@@ -89,6 +89,8 @@ int run_remesh(RemeshOptions o) {
     j["energy_initial"] = r.energy_initial;
     j["energy_final"] = r.energy_final;
     j["gradient_norm_final"] = r.gradient_norm_final;
+    j["defects_polished"] = r.defects_polished;
+    j["polish_rounds"] = r.polish_rounds;
     const double total =
         r.seconds_initialization + r.seconds_rcvt + r.seconds_ccvt + r.seconds_extraction;
     j["time_s"] = total;
@@ -106,8 +108,11 @@ int run_remesh(RemeshOptions o) {
           r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
           r.feature_edges.size(), r.feature_edges_missing, 100 * fd.max / diagonal,
           100 * fd.mean / diagonal);
-    fmt::print("  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}\n",
-               r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final);
+    fmt::print(
+        "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
+        "triangles polished in {} rounds\n",
+        r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
+        r.polish_rounds);
   }
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;
@@ -130,6 +135,10 @@ void add_remesh_command(CLI::App& app, Action& run) {
   length->excludes(relative);
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
       ->default_val(20)
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--polish-rounds", o->settings.polish_rounds,
+                  "Rounds of local Lloyd steps around badly shaped triangles (0: none)")
+      ->default_val(3)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--optimizer", o->optimizer, "lbfgs or lloyd")
       ->default_val("lbfgs")

@@ -35,6 +35,9 @@ struct RemeshSettings {
   std::uint64_t seed = 1;           // random initial seeds: same seed, same output
   std::vector<Vec3> initial_seeds;  // if not empty: used instead of random seeds
   std::function<void(const RemeshProgress&)> progress;  // called once per iteration
+  // Rounds of local Lloyd steps around the output's badly shaped triangles (smallest angle
+  // under 32° or Q under 0.62), after the optimization; 0 turns this off.
+  int polish_rounds = 3;
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
   // vertices, feature curves chains of output edges. Not applied with mode rcvt.
   FeatureSettings features;
@@ -48,6 +51,8 @@ struct RemeshResult {
   double gradient_norm_initial = 0, gradient_norm_final = 0;
   double seconds_initialization = 0, seconds_rcvt = 0, seconds_ccvt = 0, seconds_extraction = 0;
   std::vector<double> energies;           // energy after each accepted iteration, in order
+  std::size_t defects_polished = 0;       // badly shaped triangles before polishing
+  int polish_rounds = 0;                  // polishing rounds that moved seeds
   Features features;                      // of the input
   std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
   std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks

@@ -15,21 +15,19 @@ std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seed
   hints_.resize(seeds.size());
   std::vector<Vec3> feet(seeds.size());
   std::vector<Tangent> tangents(seeds.size());
-  const bool featured = features_ && !features_->empty();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 256), [&](const auto& r) {
     for (std::size_t s = r.begin(); s < r.end(); ++s) {
-      const Kind kind = featured ? features_->kind[s] : Kind::surface;
-      if (kind == Kind::corner) {
+      if (kind(s) == Kind::corner) {
         feet[s] = features_->anchor[s];
-        tangents[s] = {{}, kind};
-      } else if (kind == Kind::curve) {
+        tangents[s] = {{}, Kind::corner};
+      } else if (kind(s) == Kind::curve) {
         const CurveProjector::Foot foot = curves_->nearest(features_->curve[s], seeds[s]);
         feet[s] = foot.point;
-        tangents[s] = {foot.tangent, kind};
+        tangents[s] = {foot.tangent, Kind::curve};
       } else {
         hints_[s] = hinted ? projector_.nearest(seeds[s], hints_[s]) : projector_.nearest(seeds[s]);
         feet[s] = hints_[s].point;
-        tangents[s] = {hints_[s].normal, kind};
+        tangents[s] = {hints_[s].normal, Kind::surface};
       }
     }
   });
@@ -57,6 +55,18 @@ std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seed
   for (std::size_t s = 0; s < seeds.size(); ++s)
     if (moves[s]) seeds[s] = feet[s];
   return tangents;
+}
+
+Vec3 CvtObjective::constrained(std::size_t s, const Vec3& p) const {
+  switch (kind(s)) {
+    case SeedConstraints::Kind::corner:
+      return features_->anchor[s];
+    case SeedConstraints::Kind::curve:
+      return curves_->nearest(features_->curve[s], p).point;
+    case SeedConstraints::Kind::surface:
+      break;
+  }
+  return projector_.nearest(p).point;
 }
 
 CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {

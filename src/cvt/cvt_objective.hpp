@@ -42,6 +42,15 @@ class CvtObjective {
   };
   std::vector<Tangent> project(std::vector<Vec3>& seeds);
 
+  // Where seed s goes when moved to p: the nearest point of its curve, or of the surface; a
+  // corner seed stays on its corner. Thread-safe.
+  Vec3 constrained(std::size_t s, const Vec3& p) const;
+
+  // What seed s is bound to.
+  SeedConstraints::Kind kind(std::size_t s) const {
+    return features_ && !features_->empty() ? features_->kind[s] : SeedConstraints::Kind::surface;
+  }
+
  private:
   const TriangleMesh& surface_;
   const SurfaceProjector& projector_;

@@ -31,6 +31,8 @@ struct SurfaceProjector::Tree {
 SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
   // Degenerate triangles hold no nearest point that a neighbour does not hold too; they are
   // kept only when nothing else is left, with a zero normal.
+  tree_->triangles.reserve(surface.triangles.size());
+  tree_->normals.reserve(surface.triangles.size());
   for (const bool keep_degenerate : {false, true}) {
     for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
       const auto [a, b, c] = surface.corners(t);

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "cvt/minimize.hpp"
+#include "cvt/polish_defects.hpp"
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/sampling.hpp"
@@ -80,6 +81,8 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   const auto start = Clock::now();
   if (settings.iterations < 0) throw InvalidArgument("the iteration cap must not be negative");
+  if (settings.polish_rounds < 0)
+    throw InvalidArgument("the number of polishing rounds must not be negative");
   if (!(settings.gradient_tolerance > 0))
     throw InvalidArgument("the gradient tolerance must be positive");
   if (!(surface_area(mesh) > 0)) throw InputError("the surface has no area");
@@ -133,13 +136,15 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     }
   }
 
-  // Output vertices lie on the surface: project (a no-op after CCVT), then triangulate.
+  // Output vertices lie on the surface: project (a no-op after CCVT), then triangulate, with
+  // local Lloyd steps around any badly shaped triangles.
   const auto extraction_start = Clock::now();
-  CvtObjective(mesh, projector, true, &constraints, &curves).project(seeds);
-  const RestrictedVoronoiDiagram rvd(mesh, seeds);
-  RestrictedDelaunayBuilder rdt(rvd);
-  rvd.traverse(rdt);
-  result.mesh = rdt.result();
+  CvtObjective placement(mesh, projector, true, &constraints, &curves);
+  placement.project(seeds);
+  PolishedOutput output = extract_polished(mesh, seeds, placement, {settings.polish_rounds});
+  result.polish_rounds = output.rounds;
+  result.defects_polished = output.defects;
+  result.mesh = std::move(output.mesh);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   if (!constraints.empty()) {
     const std::vector<Edge> links = feature_chains(seeds, constraints, result.features, curves);

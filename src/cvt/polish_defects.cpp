@@ -1,0 +1,174 @@
+#include "cvt/polish_defects.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "cvtmesh/quality.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// A triangle is defective below the quality bar (θmin 30°, Q 0.6) plus a margin, so
+// that the polished output clears the bar with room to spare.
+constexpr double kMinAngleDeg = 35;
+constexpr double kMinQuality = 0.65;
+
+constexpr Index kUnset = std::numeric_limits<Index>::max();
+
+// The input triangles each cell covers, as (seed, triangle) pairs.
+class CellCoverage : public PolygonSink {
+ public:
+  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    chunks_[chunk].push_back({p.seed, p.triangle});
+  }
+  void end() override {
+    pairs_.clear();
+    for (const auto& c : chunks_) pairs_.insert(pairs_.end(), c.begin(), c.end());
+    std::sort(pairs_.begin(), pairs_.end());
+    chunks_.clear();
+  }
+  // The triangles covered by any of `cells` (sorted), sorted and without repeats.
+  std::vector<Index> triangles_of(const std::vector<Index>& cells) const {
+    std::vector<Index> out;
+    for (Index s : cells) {
+      auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<Index, Index>{s, 0});
+      for (; it != pairs_.end() && it->first == s; ++it) out.push_back(it->second);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+ private:
+  std::vector<std::vector<std::pair<Index, Index>>> chunks_;
+  std::vector<std::pair<Index, Index>> pairs_;
+};
+
+// Whether the triangle has a defective shape.
+bool defective(const TriangleMesh& mesh, const Triangle& t) {
+  const TriangleShape shape =
+      triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+  return shape.min_angle < kMinAngleDeg || shape.quality < kMinQuality;
+}
+
+// The seeds of the defective triangles, sorted; `count` is set to the number of those triangles.
+std::vector<Index> defective_seeds(const TriangleMesh& rdt, std::size_t& count) {
+  std::vector<Index> seeds;
+  count = 0;
+  for (const Triangle& t : rdt.triangles) {
+    if (!defective(rdt, t)) continue;
+    ++count;
+    seeds.insert(seeds.end(), t.begin(), t.end());
+  }
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  return seeds;
+}
+
+// `set` (sorted) and its neighbours in the triangulation, sorted.
+std::vector<Index> grown(const std::vector<Index>& set, const TriangleMesh& rdt) {
+  std::vector<Index> out = set;
+  for (const Triangle& t : rdt.triangles)
+    if (std::any_of(t.begin(), t.end(),
+                    [&](Index v) { return std::binary_search(set.begin(), set.end(), v); }))
+      out.insert(out.end(), t.begin(), t.end());
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The input triangles `ids` as a mesh of their own.
+TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids) {
+  TriangleMesh sub;
+  std::vector<Index> renumbered(surface.vertices.size(), kUnset);
+  for (Index t : ids) {
+    Triangle f = surface.triangles[t];
+    for (Index& v : f) {
+      if (renumbered[v] == kUnset) {
+        renumbered[v] = static_cast<Index>(sub.vertices.size());
+        sub.vertices.push_back(surface.vertices[v]);
+      }
+      v = renumbered[v];
+    }
+    sub.triangles.push_back(f);
+  }
+  return sub;
+}
+
+// Lloyd steps on the seeds `moving`: each goes to its cell's centroid, under its constraint,
+// until the triangles among them have no defect, or after `steps` steps. The cells are
+// computed over `patch` (the input triangles around them) among the seeds `local` (the moving
+// seeds and enough rings around them to shape those cells), which also gives their triangles.
+void local_lloyd(const TriangleMesh& patch, const std::vector<Index>& local,
+                 const std::vector<Index>& moving, std::vector<Vec3>& seeds,
+                 const CvtObjective& objective, int steps) {
+  const auto is_moving = [&](Index k) {
+    return std::binary_search(moving.begin(), moving.end(), local[k]);
+  };
+  std::vector<Vec3> positions(local.size());
+  for (int step = 0; step < steps; ++step) {
+    for (std::size_t k = 0; k < local.size(); ++k) positions[k] = seeds[local[k]];
+    const RestrictedVoronoiDiagram rvd(patch, positions);
+    CellIntegrator integrator(rvd);
+    RestrictedDelaunayBuilder rdt(rvd);
+    PolygonSink* sinks[] = {&integrator, &rdt};
+    rvd.traverse(sinks);
+    const TriangleMesh& around = rdt.result();
+    if (std::none_of(around.triangles.begin(), around.triangles.end(), [&](const Triangle& t) {
+          return std::all_of(t.begin(), t.end(), is_moving) && defective(around, t);
+        }))
+      return;
+    const CellIntegrals& cells = integrator.result();
+    std::vector<Vec3> taken = positions;
+    std::sort(taken.begin(), taken.end());
+    for (std::size_t k = 0; k < local.size(); ++k) {
+      if (cells.mass[k] <= 0 || !is_moving(static_cast<Index>(k))) continue;
+      const Vec3 to = objective.constrained(local[k], cells.centroid(static_cast<Index>(k)));
+      // Seeds stay distinct: a move onto a point already taken (a convex corner, say) waits.
+      if (std::binary_search(taken.begin(), taken.end(), to)) continue;
+      taken.insert(std::upper_bound(taken.begin(), taken.end(), to), to);
+      seeds[local[k]] = to;
+    }
+  }
+}
+
+}  // namespace
+
+PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
+                                const CvtObjective& objective, const PolishSettings& settings) {
+  PolishedOutput out;
+  std::vector<Index> moving;
+  for (int round = 0;; ++round) {
+    const RestrictedVoronoiDiagram rvd(surface, seeds);
+    RestrictedDelaunayBuilder rdt(rvd);
+    CellCoverage coverage;
+    PolygonSink* sinks[] = {&rdt, &coverage};
+    rvd.traverse(sinks);
+    out.mesh = rdt.result();
+    std::size_t defects = 0;
+    const std::vector<Index> defective = defective_seeds(out.mesh, defects);
+    if (round == 0) out.defects = defects;
+    // The defects' seeds and their neighbours move, except feature seeds: moving them along
+    // their curves would undo the snapping (§4.3) that made the curves' chains of output edges.
+    std::vector<Index> movable = grown(defective, out.mesh);
+    std::erase_if(movable,
+                  [&](Index s) { return objective.kind(s) != SeedConstraints::Kind::surface; });
+    // Done, also when the last round already moved all these seeds: Lloyd converged there to
+    // a shape it cannot improve.
+    if (defective.empty() || round == settings.rounds ||
+        std::includes(moving.begin(), moving.end(), movable.begin(), movable.end()))
+      return out;
+    ++out.rounds;
+    moving = std::move(movable);
+    // One more ring of cells gives the moving cells room to shift within the patch, and one
+    // more shapes the patch's cells.
+    const std::vector<Index> margin = grown(moving, out.mesh);
+    const std::vector<Index> local = grown(margin, out.mesh);
+    const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin));
+    local_lloyd(patch, local, moving, seeds, objective, settings.steps);
+  }
+}
+
+}  // namespace cvtmesh

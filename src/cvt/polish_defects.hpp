@@ -1,0 +1,32 @@
+// Local Lloyd polishing of the output (paper §2.2's Lloyd step, applied to a few seeds): the
+// global optimization stops at an iteration cap with the tessellation nearly, not exactly,
+// centroidal, and its few badly shaped triangles sit where two seeds are still too close (a
+// 5-7 valence pair). Lloyd steps on the seeds around them, with all others fixed, finish the
+// convergence there; each step costs an RVD over only the input triangles those cells cover.
+#pragma once
+
+#include <vector>
+
+#include "cvt/cvt_objective.hpp"
+
+namespace cvtmesh {
+
+struct PolishSettings {
+  int rounds = 3;  // rounds of (find defects, Lloyd steps around them); 0: no polishing
+  int steps = 10;  // Lloyd steps per round, at most (fewer once the defects are gone)
+};
+
+struct PolishedOutput {
+  TriangleMesh mesh;        // the restricted Delaunay triangulation of the final seeds
+  int rounds = 0;           // rounds that found defects and moved seeds
+  std::size_t defects = 0;  // defective triangles found in the first round
+};
+
+// Triangulates the seeds (restricted Delaunay) and, while it has defective triangles and
+// rounds are left, moves the seeds around them by local Lloyd steps and triangulates again.
+// Moved seeds keep their constraints (objective.constrained). The result does not depend on
+// the thread count.
+PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
+                                const CvtObjective& objective, const PolishSettings& settings);
+
+}  // namespace cvtmesh
