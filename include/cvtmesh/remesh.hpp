@@ -36,7 +36,7 @@ struct RemeshSettings {
   std::vector<Vec3> initial_seeds;  // if not empty: used instead of random seeds
   std::function<void(const RemeshProgress&)> progress;  // called once per iteration
   // Rounds of local Lloyd steps around the output's badly shaped triangles (smallest angle
-  // under 32° or Q under 0.62), after the optimization; 0 turns this off.
+  // under 35° or Q under 0.65), after the optimization; 0 turns this off.
   int polish_rounds = 3;
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
   // vertices, feature curves chains of output edges. Not applied with mode rcvt.
