@@ -134,7 +134,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
   vertices->excludes(length)->excludes(relative);
   length->excludes(relative);
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
-      ->default_val(20)
+      ->default_val(10)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--polish-rounds", o->settings.polish_rounds,
                   "Rounds of local Lloyd steps around badly shaped triangles (0: none)")

@@ -28,7 +28,7 @@ struct RemeshSettings {
   std::size_t vertices = 0;          // number of output vertices
   double edge_length = 0;            // target edge length, in the mesh's units
   double edge_length_rel = 0;        // target edge length, as a fraction of the bbox diagonal
-  int iterations = 20;               // cap on the iterations of each phase
+  int iterations = 10;               // cap on the iterations of each phase
   double gradient_tolerance = 1e-3;  // stop a phase when ‖∇F‖ falls below this × its start
   Optimizer optimizer = Optimizer::lbfgs;
   CvtMode mode = CvtMode::both;     // both: RCVT, then CCVT (paper §4.2)
