@@ -355,6 +355,25 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   EXPECT_EQ(read_mesh(dir / "out.ply").vertices.size(), j["vertices"].get<std::size_t>());
 }
 
+TEST(CliRemesh, NoHausdorffLeavesTheDistanceOutOfTheReport) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(3));
+  const std::string io = quoted(dir / "sphere.off") + " " + quoted(dir / "out.off");
+  const CliRun r = run_cli(dir, "remesh --json --quiet --vertices 300 --no-hausdorff " + io);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["hausdorff_max_pct"].is_null());
+  EXPECT_TRUE(j["hausdorff_mean_pct"].is_null());
+  EXPECT_EQ(j["hausdorff_samples"], 0);
+  EXPECT_EQ(j["same_topology"], true);
+  const CliRun text = run_cli(dir, "remesh --quiet --vertices 300 --no-hausdorff " + io);
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("hausdorff not measured"), std::string::npos) << text.out;
+  const CliRun measured = run_cli(dir, "remesh --json --quiet --vertices 300 --samples 5000 " + io);
+  ASSERT_EQ(measured.code, 0) << measured.err;
+  EXPECT_EQ(nlohmann::json::parse(measured.out)["hausdorff_samples"], 5000);
+}
+
 TEST(CliRemesh, FeatureKeysFlagsAndEdgeFile) {
   TempDir dir;
   write_mesh(dir / "cube.off", cube(6));

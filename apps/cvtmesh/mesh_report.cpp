@@ -1,5 +1,7 @@
 #include "mesh_report.hpp"
 
+#include <optional>
+
 #include <fmt/core.h>
 
 namespace cvtmesh::cli {
@@ -28,12 +30,12 @@ nlohmann::ordered_json mesh_json(const TopologyReport& t, const QualityReport& q
   return j;
 }
 
-void add_reference_json(nlohmann::ordered_json& j, const HausdorffReport& h,
+void add_reference_json(nlohmann::ordered_json& j, const HausdorffReport* h,
                         const TopologyReport& reference, bool same) {
-  j["hausdorff_max_pct"] = h.max_pct();
-  j["hausdorff_mean_pct"] = h.mean_pct();
-  j["hausdorff_rms_pct"] = h.rms_pct();
-  j["hausdorff_samples"] = h.samples_per_surface;
+  j["hausdorff_max_pct"] = h ? nlohmann::ordered_json(h->max_pct()) : nullptr;
+  j["hausdorff_mean_pct"] = h ? nlohmann::ordered_json(h->mean_pct()) : nullptr;
+  j["hausdorff_rms_pct"] = h ? nlohmann::ordered_json(h->rms_pct()) : nullptr;
+  j["hausdorff_samples"] = h ? h->samples_per_surface : 0;
   j["same_topology"] = same;
   j["reference"] = {{"components", reference.components},
                     {"euler_characteristic", reference.euler_characteristic},
@@ -66,12 +68,14 @@ std::string quality_lines(const QualityReport& q) {
       q.edge_length_mean, q.edge_length_std);
 }
 
-std::string hausdorff_lines(const HausdorffReport& h, const TopologyReport& self,
+std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self,
                             const TopologyReport& reference) {
-  std::string s = fmt::format(
-      "  hausdorff max {:.5f}%   mean {:.5f}%   rms {:.5f}% of the reference's bbox diagonal "
-      "({} samples per surface)\n",
-      h.max_pct(), h.mean_pct(), h.rms_pct(), h.samples_per_surface);
+  std::string s =
+      h ? fmt::format(
+              "  hausdorff max {:.5f}%   mean {:.5f}%   rms {:.5f}% of the reference's bbox "
+              "diagonal ({} samples per surface)\n",
+              h->max_pct(), h->mean_pct(), h->rms_pct(), h->samples_per_surface)
+        : std::string("  hausdorff not measured\n");
   if (same_topology(self, reference)) return s + "  topology  same as the reference\n";
   return s + fmt::format(
                  "  topology  DIFFERS from the reference: components {} vs {}, Euler "
@@ -89,12 +93,16 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
   r.text = fmt::format("{}: {}\n", name, topology_line(r.topology)) + quality_lines(quality);
   if (reference) {
     const TopologyReport ref_topology = analyze_topology(*reference);
-    HausdorffSettings settings;
-    settings.samples = hausdorff_samples;
-    const HausdorffReport distance = hausdorff_distance(mesh, *reference, settings);
+    std::optional<HausdorffReport> distance;
+    if (hausdorff_samples != kNoHausdorff) {
+      HausdorffSettings settings;
+      settings.samples = hausdorff_samples;
+      distance = hausdorff_distance(mesh, *reference, settings);
+    }
+    const HausdorffReport* measured = distance ? &*distance : nullptr;
     r.same_topology_as_reference = same_topology(r.topology, ref_topology);
-    add_reference_json(r.json, distance, ref_topology, r.same_topology_as_reference);
-    r.text += hausdorff_lines(distance, r.topology, ref_topology);
+    add_reference_json(r.json, measured, ref_topology, r.same_topology_as_reference);
+    r.text += hausdorff_lines(measured, r.topology, ref_topology);
   }
   return r;
 }

@@ -14,22 +14,25 @@
 namespace cvtmesh::cli {
 
 nlohmann::ordered_json mesh_json(const TopologyReport& topology, const QualityReport& quality);
-void add_reference_json(nlohmann::ordered_json& json, const HausdorffReport& distance,
+// `distance` null: not measured (its keys are null).
+void add_reference_json(nlohmann::ordered_json& json, const HausdorffReport* distance,
                         const TopologyReport& reference, bool same);
 
 std::string topology_line(const TopologyReport& t);
 std::string quality_lines(const QualityReport& q);
-std::string hausdorff_lines(const HausdorffReport& h, const TopologyReport& self,
+std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self,
                             const TopologyReport& reference);
 
 // The full report of a mesh: counts, topology and quality, plus, against a reference, the
-// Hausdorff distance and the topology comparison. JSON and text carry the same figures.
+// Hausdorff distance (unless hausdorff_samples is kNoHausdorff) and the topology comparison.
+// JSON and text carry the same figures.
 struct MeshReport {
   TopologyReport topology;
   bool same_topology_as_reference = true;
   nlohmann::ordered_json json;
   std::string text;
 };
+inline constexpr std::size_t kNoHausdorff = static_cast<std::size_t>(-1);
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
                        const TriangleMesh* reference, std::size_t hausdorff_samples = 0);
 

@@ -23,7 +23,8 @@ struct RemeshOptions {
   std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges;
   RemeshSettings settings;
   int threads = 0;
-  bool quiet = false, json = false, no_features = false;
+  std::size_t samples = 200'000;
+  bool quiet = false, json = false, no_features = false, no_hausdorff = false;
 };
 
 // Input corners found among the output's vertices at exactly their input position.
@@ -67,7 +68,8 @@ int run_remesh(RemeshOptions o) {
   const RemeshResult r = remesh(input, s);
   write_mesh(o.output, r.mesh);
 
-  MeshReport report = report_mesh(o.output, r.mesh, &input);
+  MeshReport report =
+      report_mesh(o.output, r.mesh, &input, o.no_hausdorff ? kNoHausdorff : o.samples);
   const double diagonal = bounding_box(input).diagonal();
   const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
   const std::size_t corners_out = corners_kept(input, r.features, r.mesh);
@@ -136,6 +138,13 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
+  // Fewer than `quality`'s default on big inputs (2 per input face): the mean is as accurate,
+  // and on igea the report then takes 0.6 s instead of 1.5 s.
+  cmd->add_option("--samples", o->samples,
+                  "Hausdorff samples per surface for the report (0 = as `quality`)")
+      ->default_val(200'000);
+  cmd->add_flag("--no-hausdorff", o->no_hausdorff,
+                "Skip the report's Hausdorff distance (its JSON keys are null)");
   cmd->add_option("--polish-rounds", o->settings.polish_rounds,
                   "Rounds of local Lloyd steps around badly shaped triangles (0: none)")
       ->default_val(3)
