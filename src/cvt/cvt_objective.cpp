@@ -25,7 +25,8 @@ std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seed
         feet[s] = foot.point;
         tangents[s] = {foot.tangent, Kind::curve};
       } else {
-        hints_[s] = hinted ? projector_.nearest(seeds[s], hints_[s]) : projector_.nearest(seeds[s]);
+        hints_[s] =
+            hinted ? projector_->nearest(seeds[s], hints_[s]) : projector_->nearest(seeds[s]);
         feet[s] = hints_[s].point;
         tangents[s] = {hints_[s].normal, Kind::surface};
       }
@@ -66,11 +67,11 @@ Vec3 CvtObjective::constrained(std::size_t s, const Vec3& p) const {
     case SeedConstraints::Kind::surface:
       break;
   }
-  return projector_.nearest(p).point;
+  return projector_->nearest(p).point;
 }
 
 CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
-  const std::vector<Tangent> tangents = constrained_ ? project(seeds) : std::vector<Tangent>{};
+  const std::vector<Tangent> tangents = projector_ ? project(seeds) : std::vector<Tangent>{};
   ++evaluations_;
   const RestrictedVoronoiDiagram rvd(surface_, seeds);
   CellIntegrator integrator(rvd);
@@ -80,7 +81,7 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
   e.centroids.resize(seeds.size());
   for (std::size_t s = 0; s < seeds.size(); ++s)
     e.centroids[s] = integrals.mass[s] > 0 ? integrals.centroid(static_cast<Index>(s)) : seeds[s];
-  if (constrained_) {
+  if (projector_) {
     for (std::size_t s = 0; s < seeds.size(); ++s) {
       Vec3& g = e.gradient[s];
       const Vec3& d = tangents[s].direction;

@@ -15,13 +15,10 @@ namespace cvtmesh {
 
 class CvtObjective {
  public:
-  CvtObjective(const TriangleMesh& surface, const SurfaceProjector& projector, bool constrained,
+  // Restricted CVT without a projector; constrained CVT with one.
+  CvtObjective(const TriangleMesh& surface, const SurfaceProjector* projector,
                const SeedConstraints* features = nullptr, const CurveProjector* curves = nullptr)
-      : surface_(surface),
-        projector_(projector),
-        constrained_(constrained),
-        features_(features),
-        curves_(curves) {}
+      : surface_(surface), projector_(projector), features_(features), curves_(curves) {}
 
   struct Evaluation {
     double energy;
@@ -32,18 +29,19 @@ class CvtObjective {
   Evaluation operator()(std::vector<Vec3>& seeds);
   int evaluations() const { return evaluations_; }
 
-  // Moves each seed to its nearest surface point (curve seeds: curve point; corner seeds: their
-  // corner) and returns, per seed, how to constrain its gradient. A seed that would land on a
-  // point another seed already occupies (possible at convex corners) stays where it is, so seeds
-  // stay distinct; corner seeds win such ties. Each surface search starts from the previous foot.
+  // Constrained CVT only. Moves each seed to its nearest surface point (curve seeds: curve point;
+  // corner seeds: their corner) and returns, per seed, how to constrain its gradient. A seed that
+  // would land on a point another seed already occupies (possible at convex corners) stays where it
+  // is, so seeds stay distinct; corner seeds win such ties. Each surface search starts from the
+  // previous foot.
   struct Tangent {
     Vec3 direction;  // surface: the normal; curve: the tangent
     SeedConstraints::Kind kind;
   };
   std::vector<Tangent> project(std::vector<Vec3>& seeds);
 
-  // Where seed s goes when moved to p: the nearest point of its curve, or of the surface; a
-  // corner seed stays on its corner. Thread-safe.
+  // Constrained CVT only. Where seed s goes when moved to p: the nearest point of its curve, or
+  // of the surface; a corner seed stays on its corner. Thread-safe.
   Vec3 constrained(std::size_t s, const Vec3& p) const;
 
   // What seed s is bound to.
@@ -53,8 +51,7 @@ class CvtObjective {
 
  private:
   const TriangleMesh& surface_;
-  const SurfaceProjector& projector_;
-  bool constrained_;
+  const SurfaceProjector* projector_;
   const SeedConstraints* features_;
   const CurveProjector* curves_;
   int evaluations_ = 0;

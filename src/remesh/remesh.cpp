@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
+
+#include <tbb/task_group.h>
 
 #include "cvt/minimize.hpp"
 #include "cvt/polish_defects.hpp"
@@ -91,19 +94,27 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
       settings.initial_seeds.empty()
           ? sample_surface(mesh, requested_vertex_count(mesh, settings), settings.seed)
           : settings.initial_seeds;
-  const SurfaceProjector projector(mesh);
   const double spacing = edge_length_for(surface_area(mesh), seeds.size());
-  FeatureSettings feature_settings = settings.features;
-  if (feature_settings.min_sharp_curve_length == 0)
-    feature_settings.min_sharp_curve_length = 2 * spacing;  // below the output's resolution
-  result.features = detect_features(mesh, feature_settings);
-  const CurveProjector curves(mesh, result.features);
+  // What only CCVT needs (the AABB tree, the features: 0.45 s on igea's 270k triangles, all
+  // serial) is built while RCVT runs, so that it fills the cores RCVT leaves idle.
+  std::optional<SurfaceProjector> projector;
+  std::optional<CurveProjector> curves;
+  tbb::task_group ccvt_setup;
+  ccvt_setup.run([&] {
+    projector.emplace(mesh);
+    FeatureSettings feature_settings = settings.features;
+    if (feature_settings.min_sharp_curve_length == 0)
+      feature_settings.min_sharp_curve_length = 2 * spacing;  // below the output's resolution
+    result.features = detect_features(mesh, feature_settings);
+    curves.emplace(mesh, result.features);
+  });
   SeedConstraints constraints;
   result.seconds_initialization = seconds(start);
 
   auto run_phase = [&](const char* name, bool constrained, double& phase_seconds) {
     const auto phase_start = Clock::now();
-    CvtObjective objective(mesh, projector, constrained, &constraints, &curves);
+    CvtObjective objective(mesh, constrained ? &*projector : nullptr, &constraints,
+                           constrained ? &*curves : nullptr);
     const PhaseOptions options{name, settings.iterations, settings.gradient_tolerance,
                                &settings.progress, start};
     const PhaseResult phase = settings.optimizer == Optimizer::lbfgs
@@ -121,15 +132,16 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     phase_seconds = seconds(phase_start);
   };
   if (settings.mode != CvtMode::ccvt) run_phase("rcvt", false, result.seconds_rcvt);
+  ccvt_setup.wait();
   if (settings.mode != CvtMode::rcvt) {
     // The paper's two stages (§4.3): the RCVT spread the seeds; the nearest to the features now
     // move onto them, and CCVT optimizes with them bound there.
     if (!result.features.empty())
-      constraints = place_feature_seeds(seeds, mesh, result.features, curves, spacing);
+      constraints = place_feature_seeds(seeds, mesh, result.features, *curves, spacing);
     run_phase("ccvt", true, result.seconds_ccvt);
     // Surface seeds that took over a stretch of a curve join it, and CCVT resumes.
     for (int round = 0; round < kSnapRounds && !constraints.empty(); ++round) {
-      if (snap_stray_seeds(seeds, constraints, curves, spacing) == 0) break;
+      if (snap_stray_seeds(seeds, constraints, *curves, spacing) == 0) break;
       double more = 0;
       run_phase("ccvt", true, more);
       result.seconds_ccvt += more;
@@ -139,7 +151,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   // Output vertices lie on the surface: project (a no-op after CCVT), then triangulate, with
   // local Lloyd steps around any badly shaped triangles.
   const auto extraction_start = Clock::now();
-  CvtObjective placement(mesh, projector, true, &constraints, &curves);
+  CvtObjective placement(mesh, &*projector, &constraints, &*curves);
   placement.project(seeds);
   PolishedOutput output = extract_polished(mesh, seeds, placement, {settings.polish_rounds});
   result.polish_rounds = output.rounds;
@@ -147,7 +159,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   result.mesh = std::move(output.mesh);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   if (!constraints.empty()) {
-    const std::vector<Edge> links = feature_chains(seeds, constraints, result.features, curves);
+    const std::vector<Edge> links = feature_chains(seeds, constraints, result.features, *curves);
     result.feature_edges = traced_edges(links, seeds, result.mesh);
     result.feature_edges_missing = links.size() - result.feature_edges.size();
   }
