@@ -114,6 +114,39 @@ TEST(SideOfBisector, AgreesWithExactRationalsOnRandomConfigurations) {
   }
 }
 
+// The certified error bound of constructed vertices holds: |exact − rounded| ≤ error in each
+// coordinate, checked in rationals, on well-placed, offset and scaled frames, and on bisectors
+// nearly parallel to the edge they cross (a large, but still finite or infinite, bound).
+TEST(BisectorCrossing, ErrorBoundContainsTheExactVertex) {
+  CounterRng rng(11, 0);
+  int checked = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const double scale = trial % 3 == 0 ? 1e-3 : trial % 3 == 1 ? 1.0 : 1e3;
+    const Vec3 offset = trial % 2 ? Vec3{1e3, -2e3, 5e2} : Vec3{};
+    auto point = [&] { return offset + scale * random_point(rng); };
+    std::vector<Vec3> seeds = {point(), point(), point()};
+    const ClipFrame f{{point(), point(), point()}, seeds.data(), 0};
+    if (trial % 4 == 3) {
+      // x_1 mirrors x_0 across a plane through q0's edge direction, nudged: bisector (0, 1)
+      // nearly parallel to the edge q0 q1.
+      const Vec3 d = f.corners[1] - f.corners[0];
+      Vec3 n = cross(d, random_point(rng) - Vec3{0.5, 0.5, 0.5});
+      n = (1 / norm(n)) * n;
+      seeds[1] = seeds[0] + (2 * dot(f.corners[0] - seeds[0], n) + 1e-9 * scale) * n + 1e-12 * d;
+    }
+    for (const RvdVertex& v : vertices_of_each_type(f, 1, 2)) {
+      if (v.bisector_count() == 0 || !std::isfinite(v.error)) continue;
+      const RationalPoint exact = exact_vertex(f, v);
+      const Q error(v.error);
+      EXPECT_LE(CGAL::abs(Q(v.point.x) - exact.x), error) << "trial " << trial;
+      EXPECT_LE(CGAL::abs(Q(v.point.y) - exact.y), error) << "trial " << trial;
+      EXPECT_LE(CGAL::abs(Q(v.point.z) - exact.z), error) << "trial " << trial;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
 TEST(SideOfBisector, NearlyDegenerateCasesGoExactAndStayCorrect) {
   // x_j is the mirror image of x_i across a plane through the vertex's rounded position: the
   // vertex lies within rounding error of the bisector, beyond what the filters can decide.

@@ -205,18 +205,12 @@ std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b) {
   return a.symbols[0];
 }
 
-// Position of a B or C vertex from its definition, in bounded doubles (cell seed at origin).
-V<BoundedDouble> crossing_position(const ClipFrame& f, const Definition& def) {
+// Position of a C vertex from its definition, in bounded doubles (cell seed at origin).
+V<BoundedDouble> c_vertex_position(const ClipFrame& f, const Definition& def) {
   using B = BoundedDouble;
   const Vec3& xi = f.seeds[f.cell];
   const V<B> K = diff<B>(f.seeds[def.k], xi);
   const B two(2);
-  if (def.bisectors == 1) {
-    const V<B> Q1 = diff<B>(f.corners[def.edge], xi);
-    const V<B> edge = diff<B>(f.corners[(def.edge + 1) % 3], xi) - Q1;
-    const B t = (dot(K, K) - two * dot(Q1, K)) / (two * dot(edge, K));
-    return Q1 + scaled(t, edge);
-  }
   const V<B> L = diff<B>(f.seeds[def.l], xi);
   const V<B> n = cross(diff<B>(f.corners[1], f.corners[0]), diff<B>(f.corners[2], f.corners[0]));
   const V<B> r0 = scaled(two, K), r1 = scaled(two, L);
@@ -227,17 +221,52 @@ V<BoundedDouble> crossing_position(const ClipFrame& f, const Definition& def) {
   return {numerator.x / D, numerator.y / D, numerator.z / D};
 }
 
+// Position and error bound of a type B vertex, q1 + t (q2 − q1) with t = N/D, N = K·K − 2 Q1·K,
+// D = 2 (q2 − q1)·K (K = x_k − x_i, Q1 = q1 − x_i): the most frequent construction of the RVD,
+// so in plain doubles with a static bound rather than BoundedDouble. With u the unit roundoff:
+// N's terms are products of two rounded differences, summed (≤ 8u over their absolute sum, 9u
+// taken); D's likewise (≤ 5u, 6u taken); the quotient's bound follows from those of N and D
+// plus its own rounding; each coordinate then adds the roundings of t·e_c and of the sum.
+// A denominator within its own error bound gives an infinite bound (see bisector_crossing).
+void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
+  constexpr double u = BoundedDouble::kU;
+  const Vec3& xi = f.seeds[f.cell];
+  const Vec3& q1 = f.corners[def.edge];
+  const Vec3 K = f.seeds[def.k] - xi, Q1 = q1 - xi, e = f.corners[(def.edge + 1) % 3] - q1;
+  const auto abs3 = [](const Vec3& w) { return Vec3{std::abs(w.x), std::abs(w.y), std::abs(w.z)}; };
+  const Vec3 aK = abs3(K), aQ1 = abs3(Q1), ae = abs3(e);
+  const double N = dot(K, K) - 2 * dot(Q1, K), D = 2 * dot(e, K);
+  const double error_N = 9 * u * (dot(aK, aK) + 2 * dot(aQ1, aK));
+  const double error_D = 6 * u * 2 * dot(ae, aK);
+  const double t = N / D, margin = std::abs(D) - error_D;
+  const double error_t =
+      margin > 0 ? (std::abs(N) * error_D + std::abs(D) * error_N) / (std::abs(D) * margin) +
+                       u * std::abs(t)
+                 : std::numeric_limits<double>::infinity();
+  v.point = q1 + t * e;
+  const Vec3 ap = abs3(v.point);
+  const double e_max = std::max({ae.x, ae.y, ae.z});
+  const double p_max = std::max({ap.x, ap.y, ap.z});
+  v.error = (error_t * (1 + 2 * u) + 2.01 * u * std::abs(t)) * e_max + 1.01 * u * p_max +
+            BoundedDouble::kTiny;
+}
+
 }  // namespace
 
 RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVertex& b, Index j) {
   RvdVertex v;
   const std::int32_t shared = common_symbol(a, b);
   v.symbols = {shared, static_cast<std::int32_t>(j)};
-  const V<BoundedDouble> p = crossing_position(f, define(v));
+  const Definition def = define(v);
   const Vec3& xi = f.seeds[f.cell];
-  const BoundedDouble x = p.x + xi.x, y = p.y + xi.y, z = p.z + xi.z;
-  v.point = {x.value, y.value, z.value};
-  v.error = std::max({x.error, y.error, z.error});
+  if (def.bisectors == 1) {
+    edge_crossing(f, def, v);
+  } else {
+    const V<BoundedDouble> p = c_vertex_position(f, def);
+    const BoundedDouble x = p.x + xi.x, y = p.y + xi.y, z = p.z + xi.z;
+    v.point = {x.value, y.value, z.value};
+    v.error = std::max({x.error, y.error, z.error});
+  }
   if (!std::isfinite(v.error) || !std::isfinite(v.point.x + v.point.y + v.point.z)) {
     // Nearly parallel planes: the formula is ill-conditioned. Interpolate along the segment
     // where the (approximate) side function changes sign; this position serves integration
