@@ -22,9 +22,10 @@ struct PolishedOutput {
   std::size_t defects = 0;  // defective triangles found in the first round
 };
 
-// Triangulates the seeds (restricted Delaunay) and, while it has defective triangles and
-// rounds are left, moves the seeds around them by local Lloyd steps and triangulates again.
-// Moved seeds keep their constraints (objective.constrained). The result does not depend on
+// Triangulates the seeds (restricted Delaunay) and, while it has defective triangles, rounds
+// are left and the last round did not already move every seed around them, moves the surface
+// seeds around them by local Lloyd steps and triangulates again. Moved seeds stay on the
+// surface (objective.constrained); feature seeds do not move. The result does not depend on
 // the thread count.
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings);
