@@ -27,16 +27,14 @@ class CellCoverage : public PolygonSink {
   void end() override {
     pairs_.clear();
     for (const auto& c : chunks_) pairs_.insert(pairs_.end(), c.begin(), c.end());
-    std::sort(pairs_.begin(), pairs_.end());
     chunks_.clear();
   }
-  // The triangles covered by any of `cells` (sorted), sorted and without repeats.
+  // The triangles covered by any of `cells` (sorted), sorted and without repeats. One scan, only
+  // in rounds that found defects: most extractions never ask.
   std::vector<Index> triangles_of(const std::vector<Index>& cells) const {
     std::vector<Index> out;
-    for (Index s : cells) {
-      auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<Index, Index>{s, 0});
-      for (; it != pairs_.end() && it->first == s; ++it) out.push_back(it->second);
-    }
+    for (const auto& [seed, triangle] : pairs_)
+      if (std::binary_search(cells.begin(), cells.end(), seed)) out.push_back(triangle);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;

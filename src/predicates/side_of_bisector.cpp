@@ -159,6 +159,11 @@ int exact_side(const ClipFrame& f, const Definition& def, Index j, PredicateCoun
   return 1;
 }
 
+// Coordinatewise absolute value, for the static error bounds below.
+Vec3 abs(const Vec3& w) {
+  return {std::abs(w.x), std::abs(w.y), std::abs(w.z)};
+}
+
 // Filter 1: the sign of d = J·((v − x_i) + (v − x_j)) on the vertex's rounded position, or 0
 // when its error bound cannot certify it. A static error bound in plain doubles (this runs for
 // nearly every predicate, so it avoids BoundedDouble's per-operation bookkeeping). With u the
@@ -169,7 +174,7 @@ int exact_side(const ClipFrame& f, const Definition& def, Index j, PredicateCoun
 int rounded_side(const Vec3& xi, const Vec3& xj, const RvdVertex& v) {
   const Vec3 J = xj - xi, a = v.point - xi, b = v.point - xj;
   const double d = dot(J, a + b);
-  const Vec3 aJ{std::abs(J.x), std::abs(J.y), std::abs(J.z)};
+  const Vec3 aJ = abs(J);
   const double spread = aJ.x * (std::abs(a.x) + std::abs(b.x)) +
                         aJ.y * (std::abs(a.y) + std::abs(b.y)) +
                         aJ.z * (std::abs(a.z) + std::abs(b.z));
@@ -233,8 +238,7 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
   const Vec3& xi = f.seeds[f.cell];
   const Vec3& q1 = f.corners[def.edge];
   const Vec3 K = f.seeds[def.k] - xi, Q1 = q1 - xi, e = f.corners[(def.edge + 1) % 3] - q1;
-  const auto abs3 = [](const Vec3& w) { return Vec3{std::abs(w.x), std::abs(w.y), std::abs(w.z)}; };
-  const Vec3 aK = abs3(K), aQ1 = abs3(Q1), ae = abs3(e);
+  const Vec3 aK = abs(K), aQ1 = abs(Q1), ae = abs(e);
   const double N = dot(K, K) - 2 * dot(Q1, K), D = 2 * dot(e, K);
   const double error_N = 9 * u * (dot(aK, aK) + 2 * dot(aQ1, aK));
   const double error_D = 6 * u * 2 * dot(ae, aK);
@@ -244,7 +248,7 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
                        u * std::abs(t)
                  : std::numeric_limits<double>::infinity();
   v.point = q1 + t * e;
-  const Vec3 ap = abs3(v.point);
+  const Vec3 ap = abs(v.point);
   const double e_max = std::max({ae.x, ae.y, ae.z});
   const double p_max = std::max({ap.x, ap.y, ap.z});
   v.error = (error_t * (1 + 2 * u) + 2.01 * u * std::abs(t)) * e_max + 1.01 * u * p_max +
