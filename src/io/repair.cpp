@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 #include <string>
+#include <tuple>
 
 #include "cvtmesh/repair.hpp"
 
@@ -73,18 +74,23 @@ std::size_t remove_unreferenced_vertices(TriangleMesh& mesh) {
 }  // namespace
 
 std::size_t remove_duplicate_triangles(TriangleMesh& mesh) {
-  auto key = [](Triangle t) {
-    std::sort(t.begin(), t.end());
-    return t;
+  // Each triangle's sorted corners with its index, sorted once: copies of a triangle end up
+  // adjacent, the first in file order first (the index breaks ties).
+  struct Keyed {
+    Triangle key;
+    std::size_t index;
   };
-  std::vector<std::size_t> order(mesh.triangles.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return key(mesh.triangles[a]) < key(mesh.triangles[b]);
+  std::vector<Keyed> keyed(mesh.triangles.size());
+  for (std::size_t t = 0; t < keyed.size(); ++t) {
+    keyed[t] = {mesh.triangles[t], t};
+    std::sort(keyed[t].key.begin(), keyed[t].key.end());
+  }
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+    return std::tie(a.key, a.index) < std::tie(b.key, b.index);
   });
-  std::vector<bool> keep(order.size(), true);
-  for (std::size_t i = 1; i < order.size(); ++i)
-    if (key(mesh.triangles[order[i]]) == key(mesh.triangles[order[i - 1]])) keep[order[i]] = false;
+  std::vector<bool> keep(keyed.size(), true);
+  for (std::size_t i = 1; i < keyed.size(); ++i)
+    if (keyed[i].key == keyed[i - 1].key) keep[keyed[i].index] = false;
   std::size_t n = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     if (keep[t]) mesh.triangles[n++] = mesh.triangles[t];
