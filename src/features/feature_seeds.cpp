@@ -7,7 +7,7 @@
 #include <string>
 
 #include "cvtmesh/errors.hpp"
-#include "voronoi/nearest_seed.hpp"
+#include "geometry/point_tree.hpp"
 
 namespace cvtmesh {
 
@@ -60,7 +60,7 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
   result.kind.assign(seeds.size(), SeedConstraints::Kind::surface);
   result.curve.assign(seeds.size(), 0);
   result.anchor.assign(seeds.size(), {});
-  const NearestSeed tree(seeds);
+  const PointTree tree(seeds);
   std::vector<bool> taken(seeds.size(), false);
   std::vector<Index> near;
   for (const Wanted& w : wanted) {
@@ -92,7 +92,7 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
 
 std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
                              const CurveProjector& curves, double spacing) {
-  const NearestSeed tree(seeds);
+  const PointTree tree(seeds);
   constexpr auto kNone = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> joins(seeds.size(), kNone);  // per stray seed: the curve it joins
   std::vector<double> d2(seeds.size(), std::numeric_limits<double>::infinity());

@@ -1,4 +1,4 @@
-#include "voronoi/nearest_seed.hpp"
+#include "geometry/point_tree.hpp"
 
 #include <nanoflann.hpp>
 
@@ -6,12 +6,12 @@ namespace cvtmesh {
 
 namespace {
 
-// nanoflann's dataset adaptor over the seed array.
-struct SeedCloud {
-  const std::vector<Vec3>& seeds;
-  std::size_t kdtree_get_point_count() const { return seeds.size(); }
+// nanoflann's dataset adaptor over the point array.
+struct PointCloud {
+  const std::vector<Vec3>& points;
+  std::size_t kdtree_get_point_count() const { return points.size(); }
   double kdtree_get_pt(std::size_t i, std::size_t dim) const {
-    return seeds[i][static_cast<int>(dim)];
+    return points[i][static_cast<int>(dim)];
   }
   template <class Box>
   bool kdtree_get_bbox(Box&) const {
@@ -19,24 +19,24 @@ struct SeedCloud {
   }
 };
 
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, SeedCloud>,
-                                                   SeedCloud, 3, std::size_t>;
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
+                                                   PointCloud, 3, std::size_t>;
 
 }  // namespace
 
-struct NearestSeed::Tree {
-  SeedCloud cloud;
+struct PointTree::Tree {
+  PointCloud cloud;
   KdTree index;
-  explicit Tree(const std::vector<Vec3>& seeds)
-      : cloud{seeds}, index(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {
+  explicit Tree(const std::vector<Vec3>& points)
+      : cloud{points}, index(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {
     index.buildIndex();
   }
 };
 
-NearestSeed::NearestSeed(const std::vector<Vec3>& seeds) : tree_(std::make_unique<Tree>(seeds)) {}
-NearestSeed::~NearestSeed() = default;
+PointTree::PointTree(const std::vector<Vec3>& points) : tree_(std::make_unique<Tree>(points)) {}
+PointTree::~PointTree() = default;
 
-Index NearestSeed::operator()(const Vec3& p) const {
+Index PointTree::operator()(const Vec3& p) const {
   std::size_t index = 0;
   double d2 = 0;
   nanoflann::KNNResultSet<double, std::size_t> result(1);
@@ -46,7 +46,7 @@ Index NearestSeed::operator()(const Vec3& p) const {
   return static_cast<Index>(index);
 }
 
-void NearestSeed::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const {
+void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const {
   std::vector<std::size_t> indices(k);
   std::vector<double> d2(k);
   const double query[3] = {p.x, p.y, p.z};
@@ -54,7 +54,7 @@ void NearestSeed::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out)
   out.assign(indices.begin(), indices.begin() + static_cast<std::ptrdiff_t>(found));
 }
 
-void NearestSeed::within(const Vec3& p, double r2, std::vector<Index>& out) const {
+void PointTree::within(const Vec3& p, double r2, std::vector<Index>& out) const {
   std::vector<std::pair<std::size_t, double>> found;
   const double query[3] = {p.x, p.y, p.z};
   tree_->index.radiusSearch(query, r2, found, nanoflann::SearchParams(32, 0, false));

@@ -1,4 +1,5 @@
-// Seeds nearest to a point: a kd-tree over the seeds (nanoflann).
+// Points nearest to a query: a kd-tree over a point set (nanoflann), for the RVD's seeds and
+// the surface projector's triangle centroids.
 #pragma once
 
 #include <memory>
@@ -8,15 +9,16 @@
 
 namespace cvtmesh {
 
-class NearestSeed {
+class PointTree {
  public:
-  explicit NearestSeed(const std::vector<Vec3>& seeds);
-  ~NearestSeed();
+  // Keeps a reference to `points`, which must outlive the tree.
+  explicit PointTree(const std::vector<Vec3>& points);
+  ~PointTree();
   // Thread-safe after construction; deterministic (the tree is built the same way every time).
   Index operator()(const Vec3& p) const;
-  // The k seeds nearest to p (all seeds if fewer), in no particular order.
+  // The k points nearest to p (all points if fewer), in no particular order.
   void nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const;
-  // Every seed within squared distance r2 of p, in no particular order.
+  // Every point within squared distance r2 of p, in no particular order.
   void within(const Vec3& p, double r2, std::vector<Index>& out) const;
 
  private:

@@ -6,6 +6,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <optional>
+
+#include "geometry/point_tree.hpp"
 
 namespace cvtmesh {
 
@@ -20,6 +23,8 @@ struct SurfaceProjector::Tree {
   Triangles triangles;
   std::vector<Vec3> normals;
   AabbTree tree;
+  std::vector<Vec3> centroids;  // of `triangles`: the start of a query with no hint
+  std::optional<PointTree> nearest_centroid;
 
   Foot foot(const AabbTree::Point_and_primitive_id& found) const {
     const auto& [point, triangle] = found;
@@ -47,13 +52,22 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
   }
   tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
   tree_->tree.build();
-  tree_->tree.accelerate_distance_queries();
+  // A query without a hint starts from the nearest triangle centroid: a kd-tree over them is
+  // faster to build than CGAL's own (accelerate_distance_queries), as fast to query.
+  tree_->tree.do_not_accelerate_distance_queries();
+  tree_->centroids.reserve(tree_->triangles.size());
+  for (const auto& t : tree_->triangles) {
+    const auto c = CGAL::centroid(t);
+    tree_->centroids.push_back({c.x(), c.y(), c.z()});
+  }
+  tree_->nearest_centroid.emplace(tree_->centroids);
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p) const {
-  return tree_->foot(tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z)));
+  const Index t = (*tree_->nearest_centroid)(p);
+  return nearest(p, {tree_->centroids[t], tree_->normals[t], t});
 }
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint) const {

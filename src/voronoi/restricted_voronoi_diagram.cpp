@@ -11,8 +11,8 @@
 #include <deque>
 
 #include "cvtmesh/rvd.hpp"
+#include "geometry/point_tree.hpp"
 #include "predicates/side_of_bisector.hpp"
-#include "voronoi/nearest_seed.hpp"
 #include "voronoi/seed_neighbors.hpp"
 
 namespace cvtmesh {
@@ -25,8 +25,9 @@ constexpr std::size_t kChunkSize = 1024;
 
 // Nearest seeds stored per seed: enough for nearly every polygon of a centroidal tessellation
 // (about 6 Voronoi neighbours on a surface), few enough to find fast; the rest come from
-// radius searches (see Impl::for_candidates).
-constexpr std::size_t kStoredNeighbors = 20;
+// radius searches (see Impl::for_candidates). igea → 10k seeds: 12 makes a whole remesh 2-3%
+// faster than 20 (fewer kNN results per seed and evaluation, few more radius searches).
+constexpr std::size_t kStoredNeighbors = 12;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -53,7 +54,7 @@ struct RestrictedVoronoiDiagram::Impl {
   const TriangleMesh* surface;
   std::vector<Vec3> seeds;
   SeedNeighbors neighbors;
-  std::unique_ptr<NearestSeed> nearest;
+  std::unique_ptr<PointTree> nearest;
 
   // Zero-area triangles (exact test) have no facet plane, and nothing to clip.
   bool flat(std::size_t t) const {
@@ -243,7 +244,7 @@ RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
   impl_->seeds = std::move(seeds);
   reject_bad_seeds(impl_->seeds);
   auto start = std::chrono::steady_clock::now();
-  impl_->nearest = std::make_unique<NearestSeed>(impl_->seeds);
+  impl_->nearest = std::make_unique<PointTree>(impl_->seeds);
   impl_->times.kdtree_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
   impl_->neighbors = nearest_neighbors(impl_->seeds, *impl_->nearest, kStoredNeighbors);

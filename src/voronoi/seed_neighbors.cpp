@@ -37,7 +37,7 @@ void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> 
             [&](Index a, Index b) { return std::pair(d2(a), a) < std::pair(d2(b), b); });
 }
 
-SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const NearestSeed& tree,
+SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
                                 std::size_t k) {
   k = std::min(k, seeds.size() - 1);
   SeedNeighbors n;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
-#include "voronoi/nearest_seed.hpp"
+#include "geometry/point_tree.hpp"
 
 namespace cvtmesh {
 
@@ -29,7 +29,7 @@ struct SeedNeighbors {
 void reject_bad_seeds(const std::vector<Vec3>& seeds);
 
 // Each seed's k nearest other seeds (fewer when there are fewer seeds).
-SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const NearestSeed& tree,
+SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
                                 std::size_t k);
 
 // Sorts seed ids by squared distance to seed s, ties by id.
