@@ -322,6 +322,24 @@ TEST(RvdIntegrals, LinearDensityMatchesClosedForm) {
   EXPECT_NEAR(r.moment[0].y, 0.0, 1e-12);
 }
 
+TEST(RvdIntegrals, UniformDensityPathMatchesTheGeneralOne) {
+  // No density takes a shortcut for ρ = 1; an explicit ρ = 1 per vertex takes the general
+  // formula. Both integrate the same polynomials exactly.
+  const TriangleMesh m = torus(1, 0.4, 24, 12);
+  const std::vector<Vec3> seeds = sample_surface(m, 60, 4);
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  CellIntegrator uniform(rvd), general(rvd, std::vector<double>(m.vertices.size(), 1.0));
+  PolygonSink* sinks[] = {&uniform, &general};
+  rvd.traverse(sinks);
+  const CellIntegrals &u = uniform.result(), &g = general.result();
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    EXPECT_NEAR(u.mass[s], g.mass[s], 1e-13);
+    EXPECT_NEAR(u.energy[s], g.energy[s], 1e-13);
+    EXPECT_NEAR(norm(u.moment[s] - g.moment[s]), 0.0, 1e-13);
+  }
+  EXPECT_GT(u.total_energy, 0);
+}
+
 // A few Lloyd steps (seeds to their restricted centroids) spread random seeds evenly.
 std::vector<Vec3> lloyd(const TriangleMesh& m, std::vector<Vec3> seeds, int steps) {
   for (int k = 0; k < steps; ++k) {

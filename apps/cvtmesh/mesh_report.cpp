@@ -85,14 +85,16 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
 }
 
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
-                       const TriangleMesh* reference, std::size_t hausdorff_samples) {
+                       const TriangleMesh* reference, std::size_t hausdorff_samples,
+                       const TopologyReport* reference_topology) {
   MeshReport r;
   r.topology = analyze_topology(mesh);
   const QualityReport quality = measure_quality(mesh);
   r.json = mesh_json(r.topology, quality);
   r.text = fmt::format("{}: {}\n", name, topology_line(r.topology)) + quality_lines(quality);
   if (reference) {
-    const TopologyReport ref_topology = analyze_topology(*reference);
+    const TopologyReport ref_topology =
+        reference_topology ? *reference_topology : analyze_topology(*reference);
     std::optional<HausdorffReport> distance;
     if (hausdorff_samples != kNoHausdorff) {
       HausdorffSettings settings;

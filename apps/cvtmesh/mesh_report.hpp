@@ -33,8 +33,10 @@ struct MeshReport {
   std::string text;
 };
 inline constexpr std::size_t kNoHausdorff = static_cast<std::size_t>(-1);
+// `reference_topology`: the reference's, when the caller has it already (else computed here).
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
-                       const TriangleMesh* reference, std::size_t hausdorff_samples = 0);
+                       const TriangleMesh* reference, std::size_t hausdorff_samples = 0,
+                       const TopologyReport* reference_topology = nullptr);
 
 // Non-fatal facts a user should hear about (non-manifold, several components, ...), one line
 // each on stderr, prefixed by the file name.

@@ -1,6 +1,7 @@
 // `cvtmesh remesh IN OUT (--vertices N | --edge-length H | --edge-length-rel R)`: isotropic
 // remeshing by CVT, with the quality report of the result against the input.
 #include <fmt/core.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cmath>
@@ -70,11 +71,17 @@ int run_remesh(RemeshOptions o) {
                  p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds);
     };
   }
+  // The input's topology, for the report, is analysed while remeshing runs: a TBB task, so it
+  // takes a core the remesher leaves idle, within --threads.
+  TopologyReport input_topology;
+  tbb::task_group analysis;
+  analysis.run([&] { input_topology = analyze_topology(input); });
   const RemeshResult r = remesh(input, s);
+  analysis.wait();
   write_mesh(o.output, r.mesh);
 
-  MeshReport report =
-      report_mesh(o.output, r.mesh, &input, o.no_hausdorff ? kNoHausdorff : o.samples);
+  MeshReport report = report_mesh(o.output, r.mesh, &input,
+                                  o.no_hausdorff ? kNoHausdorff : o.samples, &input_topology);
   const double diagonal = bounding_box(input).diagonal();
   const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
   const std::size_t corners_out = corners_kept(input, r.features, r.mesh);

@@ -54,6 +54,17 @@ FanIntegral integrate_triangle(const std::array<Vec3, 3>& p, const std::array<do
   return f;
 }
 
+// The same for ρ = 1, the common case, in a third of the operations: ∫‖x − seed‖² over a
+// triangle is A/6 (Σ_a ‖u_a‖² + Σ_{a<b} u_a·u_b) for its corners u relative to the seed.
+FanIntegral integrate_uniform(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& seed) {
+  const double area = triangle_area(p0, p1, p2);
+  const Vec3 u0 = p0 - seed, u1 = p1 - seed, u2 = p2 - seed;
+  const Vec3 sum = u0 + u1 + u2;
+  // Σ_a ‖u_a‖² + Σ_{a<b} u_a·u_b = (‖Σ u‖² + Σ ‖u_a‖²) / 2.
+  const double energy = (dot(sum, sum) + dot(u0, u0) + dot(u1, u1) + dot(u2, u2)) / 2;
+  return {area, energy * area / 6, (area / 3) * (p0 + p1 + p2)};
+}
+
 }  // namespace
 
 std::vector<Vec3> CellIntegrals::gradient(const std::vector<Vec3>& seeds) const {
@@ -76,15 +87,24 @@ void CellIntegrator::begin(std::size_t chunks) {
 
 void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
   const Vec3& seed = rvd_.seeds()[poly.seed];
+  const auto& v = poly.vertices;
+  Contribution c{poly.seed, 0, 0, {}};
+  if (density_.empty()) {
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+      const FanIntegral f = integrate_uniform(v[0].point, v[k].point, v[k + 1].point, seed);
+      c.mass += f.mass;
+      c.energy += f.energy;
+      c.moment += f.moment;
+    }
+    chunks_[chunk].push_back(c);
+    return;
+  }
   const auto corners = rvd_.surface().corners(poly.triangle);
   auto rho = [&](const Vec3& p) {
-    if (density_.empty()) return 1.0;
     const Triangle& f = rvd_.surface().triangles[poly.triangle];
     const auto l = barycentric(p, corners);
     return l[0] * density_[f[0]] + l[1] * density_[f[1]] + l[2] * density_[f[2]];
   };
-  Contribution c{poly.seed, 0, 0, {}};
-  const auto& v = poly.vertices;
   const double r0 = rho(v[0].point);
   double r_prev = rho(v[1].point);
   for (std::size_t k = 1; k + 1 < v.size(); ++k) {
