@@ -250,6 +250,7 @@ void expect_boundary_loops_kept(const char* name) {
   const TopologyReport a = analyze_topology(r.mesh), b = analyze_topology(in);
   EXPECT_EQ(a.boundary_loops, b.boundary_loops) << name;
   EXPECT_TRUE(same_topology(a, b)) << name;
+  EXPECT_TRUE(a.is_manifold()) << name;
   const double diagonal = bounding_box(in).diagonal();
   const FeatureDistance d = feature_distance(in, r.features.edges, r.mesh, r.feature_edges);
   EXPECT_LE(100 * d.mean / diagonal, 0.1) << name;
@@ -259,11 +260,9 @@ TEST(RemeshFeaturesSharedData, SharkKeepsItsBoundaryLoops) {
   expect_boundary_loops_kept("mech-holes-shark.off");
 }
 
-// KNOWN FAILURE, issue 5: at 3k vertices the output of plane_holes.obj has 3-5 non-manifold
-// edges where cells next to its sharp features are not disks, and with them one or two
-// spurious boundary loops (28-29 for the input's 27). Disabled, not relaxed, until the
-// extraction handles such cells; run it with --gtest_also_run_disabled_tests.
-TEST(RemeshFeaturesSharedData, DISABLED_PlaneHolesKeepsItsBoundaryLoops) {
+// Thin wedges next to its creases: without topology control, cells there come in two pieces
+// and the output had non-manifold edges and extra boundary loops.
+TEST(RemeshFeaturesSharedData, PlaneHolesKeepsItsBoundaryLoops) {
   expect_boundary_loops_kept("plane_holes.obj");
 }
 

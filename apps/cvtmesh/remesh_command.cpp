@@ -1,7 +1,6 @@
 // `cvtmesh remesh IN OUT (--vertices N | --edge-length H | --edge-length-rel R)`: isotropic
 // remeshing by CVT, with the quality report of the result against the input.
 #include <fmt/core.h>
-#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,17 +70,11 @@ int run_remesh(RemeshOptions o) {
                  p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds);
     };
   }
-  // The input's topology, for the report, is analysed while remeshing runs: a TBB task, so it
-  // takes a core the remesher leaves idle, within --threads.
-  TopologyReport input_topology;
-  tbb::task_group analysis;
-  analysis.run([&] { input_topology = analyze_topology(input); });
   const RemeshResult r = remesh(input, s);
-  analysis.wait();
   write_mesh(o.output, r.mesh);
 
   MeshReport report = report_mesh(o.output, r.mesh, &input,
-                                  o.no_hausdorff ? kNoHausdorff : o.samples, &input_topology);
+                                  o.no_hausdorff ? kNoHausdorff : o.samples, &r.input_topology);
   const double diagonal = bounding_box(input).diagonal();
   const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
   const std::size_t corners_out = corners_kept(input, r.features, r.mesh);
@@ -93,6 +86,9 @@ int run_remesh(RemeshOptions o) {
     j["corners_out"] = corners_out;
     j["feature_edges_out"] = r.feature_edges.size();
     j["feature_edges_missing"] = r.feature_edges_missing;
+    j["links_mended"] = r.links_mended;
+    j["islands_seeded"] = r.islands_seeded;
+    j["mend_rounds"] = r.mend_rounds;
     // null when there are input features but no output feature edges (JSON has no infinity).
     j["feature_hausdorff_max_pct"] =
         std::isfinite(fd.max) ? nlohmann::ordered_json(100 * fd.max / diagonal) : nullptr;
@@ -118,15 +114,19 @@ int run_remesh(RemeshOptions o) {
     if (!r.features.empty())
       fmt::print(
           "  features  {} edges in {} curves, {}/{} corners kept, {} output feature edges ({} "
-          "missing), distance max {:.4f}% mean {:.4f}% of bbox diagonal\n",
+          "missing, {} mended), distance max {:.4f}% mean {:.4f}% of bbox diagonal\n",
           r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
-          r.feature_edges.size(), r.feature_edges_missing, 100 * fd.max / diagonal,
+          r.feature_edges.size(), r.feature_edges_missing, r.links_mended, 100 * fd.max / diagonal,
           100 * fd.mean / diagonal);
     fmt::print(
         "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
         "triangles polished in {} rounds\n",
         r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
         r.polish_rounds);
+    if (r.mend_rounds > 0)
+      fmt::print(
+          "  topology  {} rounds of control: {} seeds added in split cells, {} on cut curves\n",
+          r.mend_rounds, r.islands_seeded, r.links_mended);
   }
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;

@@ -11,6 +11,7 @@
 
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
+#include "cvtmesh/topology.hpp"
 
 namespace cvtmesh {
 
@@ -58,6 +59,14 @@ struct RemeshResult {
   Features features;                      // of the input
   std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
   std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks
+  // Topology control (paper §4.4), at most 3 rounds, each triangulating and polishing again:
+  // seeds that joined a feature curve, or came in on one, where the output had cut it; and
+  // seeds added in the extra pieces of restricted cells split in several (where the output
+  // was not homeomorphic to the input).
+  std::size_t links_mended = 0;
+  std::size_t islands_seeded = 0;
+  int mend_rounds = 0;
+  TopologyReport input_topology;  // of the input, as analyze_topology gives it
 };
 
 // The number of vertices the settings ask for: `vertices`, or the count whose equilateral

@@ -13,6 +13,8 @@ namespace cvtmesh {
 
 namespace {
 
+constexpr Index kNoSeed = std::numeric_limits<Index>::max();
+
 // How many seeds go inside curve c (its corners not counted).
 std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
                          double spacing) {
@@ -121,8 +123,8 @@ std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
   return snapped;
 }
 
-std::vector<Edge> feature_chains(const std::vector<Vec3>& seeds, const SeedConstraints& c,
-                                 const Features& features, const CurveProjector& curves) {
+std::vector<FeatureLink> feature_links(const std::vector<Vec3>& seeds, const SeedConstraints& c,
+                                       const Features& features, const CurveProjector& curves) {
   std::vector<std::vector<std::pair<double, Index>>> along(curves.size());
   for (Index s = 0; s < seeds.size(); ++s)
     if (c.kind[s] == SeedConstraints::Kind::curve)
@@ -131,21 +133,60 @@ std::vector<Edge> feature_chains(const std::vector<Vec3>& seeds, const SeedConst
     const auto at = std::lower_bound(features.corners.begin(), features.corners.end(), vertex);
     return c.corner_seed[static_cast<std::size_t>(at - features.corners.begin())];
   };
-  std::vector<Edge> edges;
-  auto link = [&](Index a, Index b) { edges.push_back(a < b ? Edge{a, b} : Edge{b, a}); };
+  std::vector<FeatureLink> links;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     std::sort(along[k].begin(), along[k].end());
-    std::vector<Index> chain;
+    const bool closed = curves.closed(k);
     const auto& v = features.curves[k].vertices;
-    if (!curves.closed(k)) chain.push_back(corner_seed(v.front()));
-    for (const auto& [s, seed] : along[k]) chain.push_back(seed);
-    if (!curves.closed(k)) chain.push_back(corner_seed(v.back()));
-    for (std::size_t i = 0; i + 1 < chain.size(); ++i) link(chain[i], chain[i + 1]);
-    if (curves.closed(k) && chain.size() > 2) link(chain.back(), chain.front());
+    if (!closed) {
+      along[k].insert(along[k].begin(), {0.0, corner_seed(v.front())});
+      along[k].push_back({curves.length(k), corner_seed(v.back())});
+    }
+    const auto curve = static_cast<std::uint32_t>(k);
+    auto link = [&](const std::pair<double, Index>& a, const std::pair<double, Index>& b,
+                    double wrap) {
+      links.push_back({{std::min(a.second, b.second), std::max(a.second, b.second)},
+                       curve,
+                       a.first,
+                       b.first + wrap});
+    };
+    for (std::size_t i = 0; i + 1 < along[k].size(); ++i) link(along[k][i], along[k][i + 1], 0);
+    if (closed && along[k].size() > 2) link(along[k].back(), along[k].front(), curves.length(k));
   }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
+  return links;
+}
+
+std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
+                               const std::vector<FeatureLink>& missing,
+                               const CurveProjector& curves, double spacing) {
+  const std::vector<Vec3> before = seeds;  // owners are judged on the seeds before any move
+  const PointTree tree(before);
+  std::set<Vec3> occupied(seeds.begin(), seeds.end());
+  std::vector<bool> moved(seeds.size(), false);
+  std::size_t mended = 0;
+  for (const FeatureLink& link : missing) {
+    // The stretch's stray owners, by samples `spacing`/8 apart: surface seeds nearest to one of
+    // its points. The one nearest to the stretch's middle joins the curve there.
+    const Vec3 middle = curves.at(link.curve, (link.from + link.to) / 2);
+    const auto n = static_cast<std::size_t>(std::ceil(8 * (link.to - link.from) / spacing)) + 1;
+    Index stray = kNoSeed;
+    double stray_d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 1; i < n; ++i) {
+      const double s =
+          link.from + (link.to - link.from) * static_cast<double>(i) / static_cast<double>(n);
+      const Index owner = tree(curves.at(link.curve, s));
+      if (moved[owner] || c.kind[owner] != SeedConstraints::Kind::surface) continue;
+      const double d2 = dot(before[owner] - middle, before[owner] - middle);
+      if (d2 < stray_d2) stray_d2 = d2, stray = owner;
+    }
+    if (stray == kNoSeed || !occupied.insert(middle).second) continue;  // seeds stay distinct
+    seeds[stray] = middle;
+    moved[stray] = true;
+    c.kind[stray] = SeedConstraints::Kind::curve;
+    c.curve[stray] = link.curve;
+    ++mended;
+  }
+  return mended;
 }
 
 }  // namespace cvtmesh

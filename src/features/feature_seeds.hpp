@@ -34,9 +34,23 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
 std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
                              const CurveProjector& curves, double spacing);
 
-// The feature edges the output must have: consecutive seeds along each curve (corners at the
-// ends), as pairs of seed ids, ordered by their projections on the curve.
-std::vector<Edge> feature_chains(const std::vector<Vec3>& seeds, const SeedConstraints& c,
-                                 const Features& features, const CurveProjector& curves);
+// A feature edge the output must have: seeds consecutive along a curve (corners at the ends),
+// ordered by their projections on it, and the stretch of the curve between them.
+struct FeatureLink {
+  Edge seeds;  // seed ids, the smaller first
+  std::uint32_t curve;
+  double from, to;  // arc lengths, from < to; past the length on a closed curve's last link
+};
+std::vector<FeatureLink> feature_links(const std::vector<Vec3>& seeds, const SeedConstraints& c,
+                                       const Features& features, const CurveProjector& curves);
+
+// The output misses a link where a third cell covers part of its stretch, cutting the curve
+// there. For each such link whose stretch a surface seed owns in part, that seed (the one
+// nearest to the stretch's middle, if several) joins the curve at the middle. Links cut only
+// by feature seeds stay as they are: a seed added there would crowd the curve. Returns how
+// many seeds joined.
+std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
+                               const std::vector<FeatureLink>& missing,
+                               const CurveProjector& curves, double spacing);
 
 }  // namespace cvtmesh

@@ -14,6 +14,7 @@
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "features/feature_seeds.hpp"
+#include "remesh/mend_topology.hpp"
 
 namespace cvtmesh {
 
@@ -30,16 +31,19 @@ constexpr std::size_t kMaxVertices = 50'000'000;
 // Rounds of stray-seed snapping after CCVT (each one a CCVT run); one or two suffice in practice.
 constexpr int kSnapRounds = 3;
 
+// Rounds of topology control after extraction (each one an extraction); rarely more than one.
+constexpr int kMendRounds = 3;
+
 // The edge length of N seeds spread evenly over area A as equilateral triangles (about two
 // triangles per vertex): the inverse of requested_vertex_count's formula.
 double edge_length_for(double area, std::size_t n) {
   return std::sqrt(area / (std::sqrt(3.0) / 2 * static_cast<double>(n)));
 }
 
-// The chain links (seed ids) that are edges of the output, in output vertex ids; the output's
-// vertices are seeds, matched by position (repairs renumber them).
-std::vector<Edge> traced_edges(const std::vector<Edge>& links, const std::vector<Vec3>& seeds,
-                               const TriangleMesh& output) {
+// The links that are edges of the output, in output vertex ids; the output's vertices are
+// seeds, matched by position (repairs renumber them).
+std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
+                               const std::vector<Vec3>& seeds, const TriangleMesh& output) {
   std::map<Vec3, Index> id;
   for (Index v = 0; v < output.vertices.size(); ++v) id.emplace(output.vertices[v], v);
   std::vector<Edge> edges;
@@ -48,12 +52,14 @@ std::vector<Edge> traced_edges(const std::vector<Edge>& links, const std::vector
       edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
   std::sort(edges.begin(), edges.end());
   std::vector<Edge> traced;
-  for (const Edge& link : links) {
-    const auto ia = id.find(seeds[link[0]]), ib = id.find(seeds[link[1]]);
+  for (const FeatureLink& link : links) {
+    const auto ia = id.find(seeds[link.seeds[0]]), ib = id.find(seeds[link.seeds[1]]);
     if (ia == id.end() || ib == id.end()) continue;
     const Edge e{std::min(ia->second, ib->second), std::max(ia->second, ib->second)};
     if (std::binary_search(edges.begin(), edges.end(), e)) traced.push_back(e);
   }
+  std::sort(traced.begin(), traced.end());
+  traced.erase(std::unique(traced.begin(), traced.end()), traced.end());
   return traced;
 }
 
@@ -107,6 +113,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
       feature_settings.min_sharp_curve_length = 2 * spacing;  // below the output's resolution
     result.features = detect_features(mesh, feature_settings);
     curves.emplace(mesh, result.features);
+    result.input_topology = analyze_topology(mesh);  // what topology control compares with
   });
   SeedConstraints constraints;
   result.seconds_initialization = seconds(start);
@@ -156,12 +163,27 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   PolishedOutput output = extract_polished(mesh, seeds, placement, {settings.polish_rounds});
   result.polish_rounds = output.rounds;
   result.defects_polished = output.defects;
+  // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
+  const MendContext context{
+      mesh,    result.input_topology,   result.features, *curves, *projector, placement,
+      spacing, {settings.polish_rounds}};
+  MendReport mends;
+  output = mend_topology(context, std::move(output), seeds, constraints, kMendRounds, mends);
+  result.polish_rounds += mends.polish_rounds;
+  result.links_mended = mends.links_mended;
+  result.islands_seeded = mends.islands;
+  result.mend_rounds = mends.rounds;
   result.mesh = std::move(output.mesh);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   if (!constraints.empty()) {
-    const std::vector<Edge> links = feature_chains(seeds, constraints, result.features, *curves);
+    const std::vector<FeatureLink> links =
+        feature_links(seeds, constraints, result.features, *curves);
     result.feature_edges = traced_edges(links, seeds, result.mesh);
-    result.feature_edges_missing = links.size() - result.feature_edges.size();
+    std::vector<Edge> wanted;
+    for (const FeatureLink& link : links) wanted.push_back(link.seeds);
+    std::sort(wanted.begin(), wanted.end());
+    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+    result.feature_edges_missing = wanted.size() - result.feature_edges.size();
   }
   result.seconds_extraction = seconds(extraction_start);
   return result;

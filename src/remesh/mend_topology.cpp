@@ -1,0 +1,75 @@
+#include "remesh/mend_topology.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "cvt/cell_islands.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// The links whose seeds are not joined by an edge of `rdt` (vertices: the seeds, by id).
+std::vector<FeatureLink> missing_links(const std::vector<FeatureLink>& links,
+                                       const TriangleMesh& rdt) {
+  std::vector<Edge> edges;
+  for (const Triangle& t : rdt.triangles)
+    for (int k = 0; k < 3; ++k)
+      edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
+  std::sort(edges.begin(), edges.end());
+  std::vector<FeatureLink> missing;
+  for (const FeatureLink& link : links)
+    if (!std::binary_search(edges.begin(), edges.end(), link.seeds)) missing.push_back(link);
+  return missing;
+}
+
+// A new surface seed at the nearest surface point of each island's centroid, unless a seed is
+// there already. Returns how many came in.
+std::size_t seed_islands(const MendContext& m, const std::vector<CellIsland>& islands,
+                         std::vector<Vec3>& seeds, SeedConstraints& constraints) {
+  std::set<Vec3> occupied(seeds.begin(), seeds.end());
+  std::size_t added = 0;
+  for (const CellIsland& island : islands) {
+    const Vec3 p = m.projector.nearest(island.centroid).point;
+    if (!occupied.insert(p).second) continue;
+    seeds.push_back(p);
+    if (!constraints.empty()) {
+      constraints.kind.push_back(SeedConstraints::Kind::surface);
+      constraints.curve.push_back(0);
+      constraints.anchor.push_back({});
+    }
+    ++added;
+  }
+  return added;
+}
+
+}  // namespace
+
+PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::vector<Vec3>& seeds,
+                             SeedConstraints& constraints, int rounds, MendReport& report) {
+  for (int round = 0; round < rounds; ++round) {
+    std::size_t changed = 0;
+    if (!constraints.empty()) {
+      const std::vector<FeatureLink> missing =
+          missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh);
+      const std::size_t mended =
+          mend_missing_links(seeds, constraints, missing, m.curves, m.spacing);
+      report.links_mended += mended;
+      changed += mended;
+    }
+    // The cells' pieces cost one more RVD: only when the output shows a defect.
+    const TopologyReport t = analyze_topology(output.mesh);
+    if (!t.is_manifold() || !same_topology(t, m.surface_topology)) {
+      const std::size_t added = seed_islands(m, cell_islands(m.surface, seeds), seeds, constraints);
+      report.islands += added;
+      changed += added;
+    }
+    if (changed == 0) break;
+    ++report.rounds;
+    output = extract_polished(m.surface, seeds, m.placement, m.polish);
+    report.polish_rounds += output.rounds;
+  }
+  return output;
+}
+
+}  // namespace cvtmesh

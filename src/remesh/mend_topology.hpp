@@ -1,0 +1,40 @@
+// Topology control of the output (paper §4.4), after the optimization: the restricted Delaunay
+// triangulation must trace every feature curve and be homeomorphic to the input. Where it is
+// not, seeds are moved or added there, and the output is made again.
+#pragma once
+
+#include <vector>
+
+#include "cvt/polish_defects.hpp"
+#include "cvtmesh/topology.hpp"
+
+namespace cvtmesh {
+
+struct MendContext {
+  const TriangleMesh& surface;
+  const TopologyReport& surface_topology;
+  const Features& features;
+  const CurveProjector& curves;
+  const SurfaceProjector& projector;
+  const CvtObjective& placement;  // where seeds may go (see extract_polished)
+  double spacing;                 // the target edge length
+  PolishSettings polish;
+};
+
+struct MendReport {
+  std::size_t links_mended = 0;  // seeds that joined a curve, or came in on one
+  std::size_t islands = 0;       // seeds added in the extra pieces of cells
+  int rounds = 0;                // rounds that changed the seeds
+  int polish_rounds = 0;         // polishing rounds over all the extractions after the first
+};
+
+// Up to `rounds` times, while the output misses links of the feature chains, or its topology
+// differs from the surface's (non-manifold, or other components, Euler characteristic or
+// boundary loops): mends the links (mend_missing_links), puts a new surface seed in each extra
+// piece of a cell (cell_islands), and extracts again (polishing around the new seeds). Returns the
+// last extraction. Seeds and constraints grow by the seeds added. Independent of the thread count.
+PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
+                             std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,
+                             MendReport& report);
+
+}  // namespace cvtmesh
