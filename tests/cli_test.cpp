@@ -348,9 +348,11 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   for (const char* key :
        {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct", "same_topology",
         "iterations", "rvd_evaluations", "energy_initial", "energy_final", "gradient_norm_final",
-        "defects_polished", "polish_rounds", "time_s", "timings"})
+        "defects_polished", "polish_rounds", "links_mended", "islands_seeded", "mend_rounds",
+        "time_s", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["same_topology"], true);
+  EXPECT_EQ(j["mend_rounds"], 0);  // a sphere this well sampled needs no topology control
   EXPECT_LT(j["energy_final"].get<double>(), j["energy_initial"].get<double>());
   EXPECT_EQ(read_mesh(dir / "out.ply").vertices.size(), j["vertices"].get<std::size_t>());
 }
