@@ -51,7 +51,7 @@ struct RemeshResult {
   double energy_initial = 0, energy_final = 0;
   double gradient_norm_initial = 0, gradient_norm_final = 0;
   // The AABB tree and the features, needed from CCVT on, are built while RCVT runs: their time
-  // counts in seconds_rcvt. Extraction includes the polishing.
+  // counts in seconds_rcvt. Extraction includes the polishing and the topology control.
   double seconds_initialization = 0, seconds_rcvt = 0, seconds_ccvt = 0, seconds_extraction = 0;
   std::vector<double> energies;           // energy after each accepted iteration, in order
   std::size_t defects_polished = 0;       // badly shaped triangles before polishing

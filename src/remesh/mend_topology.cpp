@@ -12,11 +12,7 @@ namespace {
 // The links whose seeds are not joined by an edge of `rdt` (vertices: the seeds, by id).
 std::vector<FeatureLink> missing_links(const std::vector<FeatureLink>& links,
                                        const TriangleMesh& rdt) {
-  std::vector<Edge> edges;
-  for (const Triangle& t : rdt.triangles)
-    for (int k = 0; k < 3; ++k)
-      edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
-  std::sort(edges.begin(), edges.end());
+  const std::vector<Edge> edges = sorted_edges(rdt);
   std::vector<FeatureLink> missing;
   for (const FeatureLink& link : links)
     if (!std::binary_search(edges.begin(), edges.end(), link.seeds)) missing.push_back(link);
@@ -44,6 +40,16 @@ std::size_t seed_islands(const MendContext& m, const std::vector<CellIsland>& is
 }
 
 }  // namespace
+
+std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
+  std::vector<Edge> edges;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
 
 PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::vector<Vec3>& seeds,
                              SeedConstraints& constraints, int rounds, MendReport& report) {

@@ -46,11 +46,7 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
                                const std::vector<Vec3>& seeds, const TriangleMesh& output) {
   std::map<Vec3, Index> id;
   for (Index v = 0; v < output.vertices.size(); ++v) id.emplace(output.vertices[v], v);
-  std::vector<Edge> edges;
-  for (const Triangle& t : output.triangles)
-    for (int k = 0; k < 3; ++k)
-      edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
-  std::sort(edges.begin(), edges.end());
+  const std::vector<Edge> edges = sorted_edges(output);
   std::vector<Edge> traced;
   for (const FeatureLink& link : links) {
     const auto ia = id.find(seeds[link.seeds[0]]), ib = id.find(seeds[link.seeds[1]]);
