@@ -409,6 +409,39 @@ TEST(CliRemesh, FeatureKeysFlagsAndEdgeFile) {
   EXPECT_NE(garbage.err.find("garbage.txt:1:"), std::string::npos) << garbage.err;
 }
 
+TEST(CliRemesh, SeedsFileGivesTheStartAndTheSize) {
+  TempDir dir;
+  const TriangleMesh sphere = icosphere(4);
+  write_mesh(dir / "sphere.off", sphere);
+  std::ofstream seeds(dir / "seeds.xyz");
+  for (std::size_t v = 0; v < sphere.vertices.size(); v += 10)
+    seeds << sphere.vertices[v].x << ' ' << sphere.vertices[v].y << ' ' << sphere.vertices[v].z
+          << '\n';
+  seeds.close();
+  const std::string io = quoted(dir / "sphere.off") + " " + quoted(dir / "out.off");
+  const CliRun r = run_cli(dir, "remesh --json --quiet --no-hausdorff " + io + " --seeds-file " +
+                                    quoted(dir / "seeds.xyz"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t given = (sphere.vertices.size() + 9) / 10;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["vertices"].get<std::size_t>(), given);
+  // Another start gives another output: the file was used.
+  const CliRun random = run_cli(
+      dir, "remesh --json --quiet --no-hausdorff " + io + " --vertices " + std::to_string(given));
+  ASSERT_EQ(random.code, 0) << random.err;
+  EXPECT_NE(nlohmann::json::parse(r.out)["energy_initial"],
+            nlohmann::json::parse(random.out)["energy_initial"]);
+
+  std::ofstream(dir / "twice.xyz") << "0 0 1\n0 1 0\n1 0 0\n0 0 1\n0 0 -1\n";
+  const CliRun twice = run_cli(dir, "remesh " + io + " --seeds-file " + quoted(dir / "twice.xyz"));
+  EXPECT_EQ(twice.code, 3);
+  EXPECT_NE(twice.err.find("twice.xyz: two seeds at the same point"), std::string::npos)
+      << twice.err;
+  const CliRun both =
+      run_cli(dir, "remesh " + io + " --vertices 100 --seeds-file " + quoted(dir / "seeds.xyz"));
+  EXPECT_EQ(both.code, 2);
+  EXPECT_NE(both.err.find("excludes"), std::string::npos) << both.err;
+}
+
 TEST(CliRemesh, ProgressGoesToStderr) {
   TempDir dir;
   write_mesh(dir / "sphere.off", icosphere(3));

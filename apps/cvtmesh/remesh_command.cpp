@@ -12,6 +12,7 @@
 #include "cvtmesh/io.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
+#include "cvtmesh/sampling.hpp"
 #include "exit_codes.hpp"
 #include "mesh_report.hpp"
 
@@ -25,7 +26,7 @@ namespace {
 constexpr std::size_t kReportSamples = 200'000;
 
 struct RemeshOptions {
-  std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges;
+  std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges, seeds_file;
   RemeshSettings settings;
   int threads = 0;
   std::size_t samples = kReportSamples;
@@ -59,6 +60,17 @@ int run_remesh(RemeshOptions o) {
     } catch (const InvalidArgument& e) {
       throw InvalidArgument(o.feature_edges + ": " + e.what());
     }
+  }
+  if (!o.seeds_file.empty()) {
+    s.initial_seeds = read_points(o.seeds_file);
+    std::vector<Vec3> sorted = s.initial_seeds;
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted.size() < 4)
+      throw InputError(o.seeds_file + ": " + std::to_string(sorted.size()) +
+                       " seeds; at least 4 are needed");
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      throw InputError(o.seeds_file + ": two seeds at the same point");
+    s.vertices = s.initial_seeds.size();  // the output size
   }
   s.optimizer = o.optimizer == "lloyd" ? Optimizer::lloyd : Optimizer::lbfgs;
   s.mode = o.mode == "rcvt" ? CvtMode::rcvt : o.mode == "ccvt" ? CvtMode::ccvt : CvtMode::both;
@@ -145,8 +157,12 @@ void add_remesh_command(CLI::App& app, Action& run) {
   auto* length = cmd->add_option("--edge-length", o->settings.edge_length, "Target edge length");
   auto* relative = cmd->add_option("--edge-length-rel", o->settings.edge_length_rel,
                                    "Target edge length as a fraction of the bbox diagonal");
-  vertices->excludes(length)->excludes(relative);
-  length->excludes(relative);
+  auto* seeds = cmd->add_option("--seeds-file", o->seeds_file,
+                                "Initial seeds instead of random ones (a text file of \"x y z\" "
+                                "lines, or a mesh's vertices); their count is the output size");
+  vertices->excludes(length)->excludes(relative)->excludes(seeds);
+  length->excludes(relative)->excludes(seeds);
+  relative->excludes(seeds);
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
@@ -179,9 +195,9 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
   add_threads_option(*cmd, o->threads);
-  cmd->callback([o, &run, vertices, length, relative] {
-    if (vertices->count() + length->count() + relative->count() == 0)
-      throw CLI::RequiredError("--vertices, --edge-length or --edge-length-rel");
+  cmd->callback([o, &run, vertices, length, relative, seeds] {
+    if (vertices->count() + length->count() + relative->count() + seeds->count() == 0)
+      throw CLI::RequiredError("--vertices, --edge-length, --edge-length-rel or --seeds-file");
     run = [o] { return run_remesh(*o); };
   });
 }
