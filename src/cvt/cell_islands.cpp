@@ -82,15 +82,15 @@ std::vector<CellIsland> PieceCollector::islands() const {
   // Per cell, its pieces (by root) with their area and moment; all but the largest are islands.
   struct Piece {
     Index seed;
-    std::size_t root, first;  // first: the piece's first polygon, for a stable order
+    std::size_t first;  // the piece's first polygon, for a stable order
     double area;
     Vec3 moment;
   };
-  std::vector<Piece> by_root(polygons.size(), {0, 0, 0, 0, {}});
+  std::vector<Piece> by_root(polygons.size(), {0, 0, 0, {}});
   std::vector<bool> seen(polygons.size(), false);
   for (std::size_t p = 0; p < polygons.size(); ++p) {
     const std::size_t r = pieces.find(p);
-    if (!seen[r]) by_root[r] = {polygons[p].seed, r, p, 0, {}}, seen[r] = true;
+    if (!seen[r]) by_root[r] = {polygons[p].seed, p, 0, {}}, seen[r] = true;
     by_root[r].area += polygons[p].area;
     by_root[r].moment += polygons[p].moment;
   }
