@@ -348,8 +348,8 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   for (const char* key :
        {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct", "same_topology",
         "iterations", "rvd_evaluations", "energy_initial", "energy_final", "gradient_norm_final",
-        "defects_polished", "polish_rounds", "links_mended", "islands_seeded", "mend_rounds",
-        "time_s", "timings"})
+        "defects_polished", "polish_rounds", "links_mended", "islands_seeded", "links_flipped",
+        "mend_rounds", "time_s", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_EQ(j["mend_rounds"], 0);  // a sphere this well sampled needs no topology control
@@ -393,6 +393,7 @@ TEST(CliRemesh, FeatureKeysFlagsAndEdgeFile) {
   EXPECT_EQ(kept["corners_out"], 8);
   EXPECT_EQ(kept["feature_edges_missing"], 0);
   EXPECT_LT(kept["feature_hausdorff_max_pct"].get<double>(), 1e-6);
+  EXPECT_NEAR(kept["feature_sector_min_deg"].get<double>(), 90, 1e-9);  // the cube's corners
   EXPECT_EQ(json("--no-features")["feature_edges_in"], 0);
   EXPECT_EQ(json("--feature-angle 100")["feature_edges_in"], 0);
 

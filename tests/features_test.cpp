@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
@@ -63,6 +64,22 @@ TEST(Features, SharpTurnOfACurveIsACorner) {
   EXPECT_EQ(f.curves.size(), 4u);
   s.angle_deg = 120;
   EXPECT_TRUE(detect_features(testing::disk(2, 4), s).corners.empty());
+}
+
+TEST(Features, NarrowestSectorIsTheAngleBetweenTwoFeaturesAtAVertex) {
+  // The cube: 90° at each corner, between each two of its three creases.
+  const TriangleMesh box = testing::cube(4);
+  EXPECT_NEAR(narrowest_feature_sector_deg(box, detect_features(box, {})), 90, 1e-9);
+  // A flat kite whose boundary is the features: its 20° tip is split in two triangles, which
+  // the sector sums; its other angles are wider.
+  const double s = std::sin(10 * std::numbers::pi / 180), c = std::cos(10 * std::numbers::pi / 180);
+  TriangleMesh kite;
+  kite.vertices = {{0, 0, 0}, {c, -s, 0}, {1, 0, 0}, {c, s, 0}, {1.2, 0, 0}};
+  kite.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}, {2, 4, 3}};
+  EXPECT_NEAR(narrowest_feature_sector_deg(kite, detect_features(kite, {})), 20, 1e-9);
+  // No vertex with two features: 360.
+  const TriangleMesh ball = testing::icosphere(2);
+  EXPECT_EQ(narrowest_feature_sector_deg(ball, detect_features(ball, {})), 360);
 }
 
 TEST(Features, UserEdgesAreKeptAndChecked) {
@@ -212,7 +229,7 @@ TEST(RemeshFeatures, ClosedCylinderKeepsItsRims) {
   EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 25.0);
 }
 
-TEST(RemeshFeaturesSharedData, FandiskAt3kMeetsThePapersTable1) {
+TEST(RemeshFeaturesSharedData, FandiskAt3kTracesEveryCrease) {
   if (!std::filesystem::exists(shared_data() / "fandisk.off"))
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();
   const TriangleMesh in = shared_mesh("fandisk.off");
@@ -220,14 +237,17 @@ TEST(RemeshFeaturesSharedData, FandiskAt3kMeetsThePapersTable1) {
   f.angle_deg = 45;
   const RemeshResult r = remesh_to(in, 3000, f);
   const QualityReport q = measure_quality(r.mesh);
-  EXPECT_GE(q.angle_min_deg, 24.35);
-  EXPECT_GE(q.q_min, 0.541);
+  // The issue asks θmin ≥ 24.35° and Qmin ≥ 0.541 too, but two of fandisk's creases meet at a
+  // 19.4° tip: an output that traces both has a triangle no wider there (Q ≤ 0.49). θmin is
+  // held near that bound instead.
+  EXPECT_GE(q.angle_min_deg, 0.8 * narrowest_feature_sector_deg(in, r.features));
   EXPECT_GE(q.angle_min_avg_deg, 51.7);
   EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
+  EXPECT_EQ(r.feature_edges_missing, 0u);
   const double diagonal = bounding_box(in).diagonal();
   const FeatureDistance d = feature_distance(in, r.features.edges, r.mesh, r.feature_edges);
   EXPECT_LE(100 * d.mean / diagonal, 0.02);
-  EXPECT_LE(100 * d.max / diagonal, 1.0);  // the issue asks 0.3%: one link is still missing
+  EXPECT_LE(100 * d.max / diagonal, 0.3);
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
 }
 
@@ -242,28 +262,33 @@ TEST(RemeshFeaturesSharedData, JointAt3kKeepsCornersAndCreases) {
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
 }
 
-void expect_boundary_loops_kept(const char* name) {
-  if (!std::filesystem::exists(shared_data() / name))
-    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
-  const TriangleMesh in = shared_mesh(name);
-  const RemeshResult r = remesh_to(in, 3000);
+void expect_boundary_loops_kept(const TriangleMesh& in, const RemeshResult& r) {
   const TopologyReport a = analyze_topology(r.mesh), b = analyze_topology(in);
-  EXPECT_EQ(a.boundary_loops, b.boundary_loops) << name;
-  EXPECT_TRUE(same_topology(a, b)) << name;
-  EXPECT_TRUE(a.is_manifold()) << name;
+  EXPECT_EQ(a.boundary_loops, b.boundary_loops);
+  EXPECT_TRUE(same_topology(a, b));
+  EXPECT_TRUE(a.is_manifold());
   const double diagonal = bounding_box(in).diagonal();
   const FeatureDistance d = feature_distance(in, r.features.edges, r.mesh, r.feature_edges);
-  EXPECT_LE(100 * d.mean / diagonal, 0.1) << name;
+  EXPECT_LE(100 * d.mean / diagonal, 0.1);
 }
 
 TEST(RemeshFeaturesSharedData, SharkKeepsItsBoundaryLoops) {
-  expect_boundary_loops_kept("mech-holes-shark.off");
+  if (!std::filesystem::exists(shared_data() / "mech-holes-shark.off"))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  const TriangleMesh in = shared_mesh("mech-holes-shark.off");
+  expect_boundary_loops_kept(in, remesh_to(in, 3000));
 }
 
 // Thin wedges next to its creases: without topology control, cells there come in two pieces
-// and the output had non-manifold edges and extra boundary loops.
-TEST(RemeshFeaturesSharedData, PlaneHolesKeepsItsBoundaryLoops) {
-  expect_boundary_loops_kept("plane_holes.obj");
+// and the output had non-manifold edges and extra boundary loops; and creases were cut.
+TEST(RemeshFeaturesSharedData, PlaneHolesKeepsItsBoundaryLoopsAndCreases) {
+  if (!std::filesystem::exists(shared_data() / "plane_holes.obj"))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  const TriangleMesh in = shared_mesh("plane_holes.obj");
+  const RemeshResult r = remesh_to(in, 3000);
+  expect_boundary_loops_kept(in, r);
+  EXPECT_EQ(r.feature_edges_missing, 0u);
+  EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
 }
 
 }  // namespace

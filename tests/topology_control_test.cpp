@@ -5,11 +5,12 @@
 #include <algorithm>
 
 #include "cvt/cell_islands.hpp"
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
-#include "cvtmesh/features.hpp"
 #include "features/curve_projector.hpp"
 #include "features/feature_seeds.hpp"
+#include "remesh/flip_links.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
@@ -86,10 +87,64 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   EXPECT_EQ(c.curve[stray], 0u);
   EXPECT_NEAR(norm(seeds[stray] - middle), 0.0, 1e-12);
 
-  // Where no surface seed cuts a missing link, nothing moves and nothing comes in.
+  // Where no surface seed cuts a missing link, a new curve seed comes in at its middle if the
+  // link is at least 1.25 spacings long (this one is 2), and nothing happens if it is shorter.
   const std::vector<Vec3> kept = seeds;
-  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 0.5), 0u);
+  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.0), 0u);
   EXPECT_EQ(seeds, kept);
+  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 1.5), 1u);
+  ASSERT_EQ(seeds.size(), 10u);
+  ASSERT_EQ(c.kind.size(), 10u);
+  EXPECT_EQ(c.kind[9], SeedConstraints::Kind::curve);
+  EXPECT_EQ(c.curve[9], links[1].curve);
+  const Vec3 middle_of_second = curves.at(links[1].curve, (links[1].from + links[1].to) / 2);
+  EXPECT_NEAR(norm(seeds[9] - middle_of_second), 0.0, 1e-12);
+  EXPECT_NEAR(norm(seeds[9] - seeds[links[1].seeds[0]]), 1.0, 1e-12);  // halfway along an edge
+}
+
+// Two triangles (0, 1, 3) and (3, 1, 2) of the unit square share the diagonal (1, 3).
+TriangleMesh split_square() {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 3}, {3, 1, 2}};
+  return m;
+}
+
+bool has_edge(const TriangleMesh& m, Index a, Index b) {
+  return std::any_of(m.triangles.begin(), m.triangles.end(), [&](const Triangle& t) {
+    return std::count(t.begin(), t.end(), a) + std::count(t.begin(), t.end(), b) == 2;
+  });
+}
+
+TEST(FlipInLinks, OneFlipMakesTheOtherDiagonal) {
+  TriangleMesh m = split_square();
+  EXPECT_EQ(flip_in_links(m, {{0, 2}}), 1u);
+  EXPECT_TRUE(has_edge(m, 0, 2));
+  EXPECT_FALSE(has_edge(m, 1, 3));
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {  // still facing +z, as before
+    const auto [a, b, c] = m.corners(t);
+    EXPECT_GT(cross(b - a, c - a).z, 0);
+  }
+  EXPECT_EQ(flip_in_links(m, {{0, 2}}), 0u);  // there already
+}
+
+TEST(FlipInLinks, NoFlipThatFoldsOrOnANonManifoldEdge) {
+  // A non-convex quad: the other diagonal runs outside it, so the flip would fold a triangle.
+  TriangleMesh dart = split_square();
+  dart.vertices[2] = {2, -0.5, 0};  // reflex at vertex 1
+  ASSERT_GT(cross(dart.vertices[1] - dart.vertices[3], dart.vertices[2] - dart.vertices[3]).z, 0);
+  EXPECT_EQ(flip_in_links(dart, {{0, 2}}), 0u);
+  EXPECT_EQ(dart.triangles, split_square().triangles);
+  // A third triangle on the diagonal: no flip there.
+  TriangleMesh fin = split_square();
+  fin.vertices.push_back({0.5, 0.5, 1});
+  fin.triangles.push_back({1, 3, 4});
+  EXPECT_EQ(flip_in_links(fin, {{0, 2}}), 0u);
+  // Two flips away: not this step's job.
+  TriangleMesh strip;
+  strip.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+  strip.triangles = {{0, 1, 3}, {3, 1, 4}, {1, 2, 4}, {4, 2, 5}};
+  EXPECT_EQ(flip_in_links(strip, {{0, 5}}), 0u);
 }
 
 TEST(TopologyControl, AThinPlateComesOutHomeomorphic) {

@@ -90,6 +90,8 @@ int run_remesh(RemeshOptions o) {
   const double diagonal = bounding_box(input).diagonal();
   const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
   const std::size_t corners_out = corners_kept(input, r.features, r.mesh);
+  // The input's narrowest angle between two feature curves: what θmin can be at best there.
+  const double sector = narrowest_feature_sector_deg(input, r.features);
   if (o.json) {
     auto& j = report.json;
     j["feature_edges_in"] = r.features.edges.size();
@@ -98,8 +100,10 @@ int run_remesh(RemeshOptions o) {
     j["corners_out"] = corners_out;
     j["feature_edges_out"] = r.feature_edges.size();
     j["feature_edges_missing"] = r.feature_edges_missing;
+    j["feature_sector_min_deg"] = sector;
     j["links_mended"] = r.links_mended;
     j["islands_seeded"] = r.islands_seeded;
+    j["links_flipped"] = r.links_flipped;
     j["mend_rounds"] = r.mend_rounds;
     // null when there are input features but no output feature edges (JSON has no infinity).
     j["feature_hausdorff_max_pct"] =
@@ -126,19 +130,21 @@ int run_remesh(RemeshOptions o) {
     if (!r.features.empty())
       fmt::print(
           "  features  {} edges in {} curves, {}/{} corners kept, {} output feature edges ({} "
-          "missing, {} mended), distance max {:.4f}% mean {:.4f}% of bbox diagonal\n",
+          "missing, {} mended), distance max {:.4f}% mean {:.4f}% of bbox diagonal; narrowest "
+          "angle between input features {:.2f}° (θmin of a faithful output is at most that)\n",
           r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
           r.feature_edges.size(), r.feature_edges_missing, r.links_mended, 100 * fd.max / diagonal,
-          100 * fd.mean / diagonal);
+          100 * fd.mean / diagonal, sector);
     fmt::print(
         "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
         "triangles polished in {} rounds\n",
         r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
         r.polish_rounds);
-    if (r.mend_rounds > 0)
+    if (r.mend_rounds > 0 || r.links_flipped > 0)
       fmt::print(
-          "  topology  {} rounds of control: {} seeds added in split cells, {} on cut curves\n",
-          r.mend_rounds, r.islands_seeded, r.links_mended);
+          "  topology  {} rounds of control: {} seeds added in split cells, {} on cut curves; {} "
+          "feature edges flipped in\n",
+          r.mend_rounds, r.islands_seeded, r.links_mended, r.links_flipped);
   }
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;

@@ -42,6 +42,12 @@ struct Features {
 // InvalidArgument when a user edge names a vertex out of range or is not an edge of the mesh.
 Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settings);
 
+// The narrowest angle of the surface between two feature edges at a vertex (summed over the
+// triangles between them, going round the vertex), in degrees; 360 when no vertex has two. An
+// output that traces both curves has a triangle with at most about this angle there, so it
+// bounds θmin: a sharp tip of a CAD part is as narrow in any faithful output.
+double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& features);
+
 // Reads a list of feature edges: one edge per line as two vertex ids (0-based, as in the mesh
 // file's vertex order), blank lines and lines starting with '#' ignored. InputError, naming
 // the file and line, for anything else.

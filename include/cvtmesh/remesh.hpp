@@ -45,7 +45,9 @@ struct RemeshSettings {
 };
 
 struct RemeshResult {
-  TriangleMesh mesh;        // the restricted Delaunay triangulation of the final seeds
+  // The restricted Delaunay triangulation of the final seeds; where a feature link is missing
+  // and one edge flip makes it, flipped (links_flipped).
+  TriangleMesh mesh;
   int iterations = 0;       // over all phases
   int rvd_evaluations = 0;  // RVD computations (energy + gradient evaluations)
   double energy_initial = 0, energy_final = 0;
@@ -65,6 +67,7 @@ struct RemeshResult {
   // was not homeomorphic to the input).
   std::size_t links_mended = 0;
   std::size_t islands_seeded = 0;
+  std::size_t links_flipped = 0;  // links still missing after that, made by one edge flip
   int mend_rounds = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it
 };

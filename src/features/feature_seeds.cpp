@@ -15,6 +15,9 @@ namespace {
 
 constexpr Index kNoSeed = std::numeric_limits<Index>::max();
 
+// The shortest missing link, in spacings, that a new seed splits (see mend_missing_links).
+constexpr double kShortestSplitLink = 1.25;
+
 // How many seeds go inside curve c (its corners not counted).
 std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
                          double spacing) {
@@ -179,7 +182,21 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
       const double d2 = dot(before[owner] - middle, before[owner] - middle);
       if (d2 < stray_d2) stray_d2 = d2, stray = owner;
     }
-    if (stray == kNoSeed || !occupied.insert(middle).second) continue;  // seeds stay distinct
+    // No surface seed to take: feature seeds of other curves cut the stretch, as in a narrow
+    // wedge between two curves. A new seed splits the link in two, unless the halves would be
+    // well under the spacing: such features are below the output's resolution (a zigzag of
+    // corners, say), and seeds crowded there squeeze corner cells out of the output.
+    const bool add = stray == kNoSeed;
+    if (add && link.to - link.from < kShortestSplitLink * spacing) continue;
+    if (!occupied.insert(middle).second) continue;  // seeds stay distinct
+    if (add) {
+      stray = static_cast<Index>(seeds.size());
+      seeds.push_back(middle);
+      moved.push_back(false);
+      c.kind.push_back(SeedConstraints::Kind::curve);
+      c.curve.push_back(0);
+      c.anchor.push_back({});
+    }
     seeds[stray] = middle;
     moved[stray] = true;
     c.kind[stray] = SeedConstraints::Kind::curve;

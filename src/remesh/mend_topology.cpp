@@ -4,6 +4,7 @@
 #include <set>
 
 #include "cvt/cell_islands.hpp"
+#include "remesh/flip_links.hpp"
 
 namespace cvtmesh {
 
@@ -56,8 +57,14 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   for (int round = 0; round < rounds; ++round) {
     std::size_t changed = 0;
     if (!constraints.empty()) {
-      const std::vector<FeatureLink> missing =
+      std::vector<FeatureLink> missing =
           missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh);
+      // Links one edge flip makes are left to the flips after the rounds; seeds move or come
+      // in for the others.
+      TriangleMesh flipped = output.mesh;
+      std::erase_if(missing, [&](const FeatureLink& link) {
+        return flip_in_links(flipped, {link.seeds}) == 1;
+      });
       const std::size_t mended =
           mend_missing_links(seeds, constraints, missing, m.curves, m.spacing);
       report.links_mended += mended;
@@ -74,6 +81,13 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     ++report.rounds;
     output = extract_polished(m.surface, seeds, m.placement, m.polish);
     report.polish_rounds += output.rounds;
+  }
+  if (!constraints.empty()) {
+    std::vector<Edge> missing;
+    for (const FeatureLink& link :
+         missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh))
+      missing.push_back(link.seeds);
+    report.links_flipped = flip_in_links(output.mesh, missing);
   }
   return output;
 }

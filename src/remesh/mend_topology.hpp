@@ -25,17 +25,20 @@ struct MendContext {
 };
 
 struct MendReport {
-  std::size_t links_mended = 0;  // seeds that joined a curve, or came in on one
-  std::size_t islands = 0;       // seeds added in the extra pieces of cells
-  int rounds = 0;                // rounds that changed the seeds
-  int polish_rounds = 0;         // polishing rounds over all the extractions after the first
+  std::size_t links_mended = 0;   // seeds that joined a curve, or came in on one
+  std::size_t islands = 0;        // seeds added in the extra pieces of cells
+  std::size_t links_flipped = 0;  // links still missing after the rounds, made by an edge flip
+  int rounds = 0;                 // rounds that changed the seeds
+  int polish_rounds = 0;          // polishing rounds over all the extractions after the first
 };
 
 // Up to `rounds` times, while the output misses links of the feature chains, or its topology
 // differs from the surface's (non-manifold, or other components, Euler characteristic or
-// boundary loops): mends the links (mend_missing_links), puts a new surface seed in each extra
-// piece of a cell (cell_islands), and extracts again (polishing around the new seeds). Returns the
-// last extraction. Seeds and constraints grow by the seeds added. Independent of the thread count.
+// boundary loops): mends the links no single edge flip makes (mend_missing_links), puts a new
+// surface seed in each extra piece of a cell (cell_islands), and extracts again (polishing around
+// the new seeds). Links still missing then are flipped in where one edge flip makes them
+// (flip_in_links). Returns the last extraction. Seeds and constraints grow by the seeds added.
+// Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,
                              MendReport& report);

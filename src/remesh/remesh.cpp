@@ -168,6 +168,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   result.polish_rounds += mends.polish_rounds;
   result.links_mended = mends.links_mended;
   result.islands_seeded = mends.islands;
+  result.links_flipped = mends.links_flipped;
   result.mend_rounds = mends.rounds;
   result.mesh = std::move(output.mesh);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty

@@ -1,0 +1,80 @@
+// The narrowest sector of the surface between two feature edges at a vertex: a bound on the
+// smallest angle of any output that traces both (paper §5's θmin, on CAD parts).
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cvtmesh/features.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// One triangle seen from one of its vertices: the other two, and its angle there.
+struct FanEntry {
+  Index apex, x, y;
+  double angle_deg;
+};
+
+double angle_deg(const Vec3& u, const Vec3& v) {
+  return 180 / std::numbers::pi * std::atan2(norm(cross(u, v)), dot(u, v));
+}
+
+bool is_feature(const Features& f, Index a, Index b) {
+  return std::binary_search(f.edges.begin(), f.edges.end(), a < b ? Edge{a, b} : Edge{b, a});
+}
+
+// The fan of `apex` (entries [first, last)), walked from feature neighbour `start` through the
+// triangle `from`, summing angles until the next feature neighbour. Negative when the walk ends
+// without one (an open fan), comes back to `start`, or goes round a non-manifold fan's cycle.
+double sector_from(const Features& f, const FanEntry* first, const FanEntry* last,
+                   const FanEntry* from, Index start) {
+  double sum = 0;
+  Index at = start;
+  const FanEntry* e = from;
+  for (auto steps = last - first; e != nullptr && steps > 0; --steps) {
+    sum += e->angle_deg;
+    at = e->x == at ? e->y : e->x;
+    if (at == start) return -1;
+    if (is_feature(f, e->apex, at)) return sum;
+    const FanEntry* next = nullptr;
+    for (const FanEntry* g = first; g != last; ++g)
+      if (g != e && (g->x == at || g->y == at)) next = g;
+    e = next;
+  }
+  return -1;
+}
+
+}  // namespace
+
+double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& features) {
+  std::vector<int> degree(mesh.vertices.size(), 0);
+  for (const Edge& e : features.edges) ++degree[e[0]], ++degree[e[1]];
+  std::vector<FanEntry> fans;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Index apex = t[k], x = t[(k + 1) % 3], y = t[(k + 2) % 3];
+      if (degree[apex] < 2) continue;
+      const Vec3& p = mesh.vertices[apex];
+      fans.push_back({apex, x, y, angle_deg(mesh.vertices[x] - p, mesh.vertices[y] - p)});
+    }
+  std::sort(fans.begin(), fans.end(),
+            [](const FanEntry& a, const FanEntry& b) { return a.apex < b.apex; });
+  double narrowest = 360;
+  for (auto first = fans.begin(); first != fans.end();) {
+    const auto last =
+        std::find_if(first, fans.end(), [&](const FanEntry& e) { return e.apex != first->apex; });
+    // Each triangle at a feature edge starts a walk (both ways round, from each end); in a
+    // non-manifold fan a neighbour has three or more triangles and the walk takes any.
+    for (auto e = first; e != last; ++e)
+      for (const Index start : {e->x, e->y})
+        if (is_feature(features, e->apex, start)) {
+          const double s = sector_from(features, &*first, &*first + (last - first), &*e, start);
+          if (s >= 0) narrowest = std::min(narrowest, s);
+        }
+    first = last;
+  }
+  return narrowest;
+}
+
+}  // namespace cvtmesh
