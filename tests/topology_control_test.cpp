@@ -128,7 +128,7 @@ TEST(FlipInLinks, OneFlipMakesTheOtherDiagonal) {
   EXPECT_EQ(flip_in_links(m, {{0, 2}}), 0u);  // there already
 }
 
-TEST(FlipInLinks, NoFlipThatFoldsOrOnANonManifoldEdge) {
+TEST(FlipInLinks, NoFlipThatFoldsMakesSliversOrIsOnANonManifoldEdge) {
   // A non-convex quad: the other diagonal runs outside it, so the flip would fold a triangle.
   TriangleMesh dart = split_square();
   dart.vertices[2] = {2, -0.5, 0};  // reflex at vertex 1
@@ -140,6 +140,14 @@ TEST(FlipInLinks, NoFlipThatFoldsOrOnANonManifoldEdge) {
   fin.vertices.push_back({0.5, 0.5, 1});
   fin.triangles.push_back({1, 3, 4});
   EXPECT_EQ(flip_in_links(fin, {{0, 2}}), 0u);
+  // A flat kite whose other diagonal is long: the flip would make 5.7° slivers.
+  TriangleMesh kite;
+  kite.vertices = {{0, 0, 0}, {1, -0.1, 0}, {2, 0, 0}, {1, 0.1, 0}};
+  kite.triangles = {{0, 1, 3}, {3, 1, 2}};
+  EXPECT_EQ(flip_in_links(kite, {{0, 2}}), 0u);
+  kite.vertices[1] = {1, -1, 0};  // now a square: it flips
+  kite.vertices[3] = {1, 1, 0};
+  EXPECT_EQ(flip_in_links(kite, {{0, 2}}), 1u);
   // Two flips away: not this step's job.
   TriangleMesh strip;
   strip.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
