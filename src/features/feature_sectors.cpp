@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "cvtmesh/features.hpp"
 
@@ -24,22 +25,22 @@ bool is_feature(const Features& f, Index a, Index b) {
   return std::binary_search(f.edges.begin(), f.edges.end(), a < b ? Edge{a, b} : Edge{b, a});
 }
 
-// The fan of `apex` (entries [first, last)), walked from feature neighbour `start` through the
-// triangle `from`, summing angles until the next feature neighbour. Negative when the walk ends
-// without one (an open fan), comes back to `start`, or goes round a non-manifold fan's cycle.
-double sector_from(const Features& f, const FanEntry* first, const FanEntry* last,
-                   const FanEntry* from, Index start) {
+// A vertex's fan walked from feature neighbour `start` through the triangle `from`, summing
+// angles until the next feature neighbour. Negative when the walk ends without one (an open
+// fan), comes back to `start`, or goes round a non-manifold fan's cycle.
+double sector_from(const Features& f, std::span<const FanEntry> fan, const FanEntry* from,
+                   Index start) {
   double sum = 0;
   Index at = start;
   const FanEntry* e = from;
-  for (auto steps = last - first; e != nullptr && steps > 0; --steps) {
+  for (std::size_t steps = fan.size(); e != nullptr && steps > 0; --steps) {
     sum += e->angle_deg;
     at = e->x == at ? e->y : e->x;
     if (at == start) return -1;
     if (is_feature(f, e->apex, at)) return sum;
     const FanEntry* next = nullptr;
-    for (const FanEntry* g = first; g != last; ++g)
-      if (g != e && (g->x == at || g->y == at)) next = g;
+    for (const FanEntry& g : fan)
+      if (&g != e && (g.x == at || g.y == at)) next = &g;
     e = next;
   }
   return -1;
@@ -66,10 +67,11 @@ double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& fe
         std::find_if(first, fans.end(), [&](const FanEntry& e) { return e.apex != first->apex; });
     // Each triangle at a feature edge starts a walk (both ways round, from each end); in a
     // non-manifold fan a neighbour has three or more triangles and the walk takes any.
-    for (auto e = first; e != last; ++e)
-      for (const Index start : {e->x, e->y})
-        if (is_feature(features, e->apex, start)) {
-          const double s = sector_from(features, &*first, &*first + (last - first), &*e, start);
+    const std::span<const FanEntry> fan(first, last);
+    for (const FanEntry& e : fan)
+      for (const Index start : {e.x, e.y})
+        if (is_feature(features, e.apex, start)) {
+          const double s = sector_from(features, fan, &e, start);
           if (s >= 0) narrowest = std::min(narrowest, s);
         }
     first = last;

@@ -81,12 +81,12 @@ bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b) {
 
 }  // namespace
 
-std::size_t flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links) {
+std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links) {
   VertexTriangles at(mesh);
-  std::size_t flipped = 0;
+  std::vector<bool> flipped;
   for (const auto& [a, b] : links)
     // Orientation makes (a, b) and (b, a) the same search.
-    if (!has_edge(mesh, at, a, b) && flip_in(mesh, at, a, b)) ++flipped;
+    flipped.push_back(!has_edge(mesh, at, a, b) && flip_in(mesh, at, a, b));
   return flipped;
 }
 

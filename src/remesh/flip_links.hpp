@@ -14,7 +14,7 @@ namespace cvtmesh {
 // For each edge (a, b) of `links` not in `mesh`: where two triangles (a, c, d) and (d, c, b)
 // share edge (c, d) and no other triangle does, they become (a, c, b) and (a, b, d), if both
 // new triangles face the way the two old ones do (no fold) and have no angle under 15°.
-// Returns how many links it made.
-std::size_t flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links);
+// Returns, per link, whether a flip made it.
+std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links);
 
 }  // namespace cvtmesh

@@ -20,6 +20,12 @@ std::vector<FeatureLink> missing_links(const std::vector<FeatureLink>& links,
   return missing;
 }
 
+std::vector<Edge> link_seeds(const std::vector<FeatureLink>& links) {
+  std::vector<Edge> seeds;
+  for (const FeatureLink& link : links) seeds.push_back(link.seeds);
+  return seeds;
+}
+
 // A new surface seed at the nearest surface point of each island's centroid, unless a seed is
 // there already. Returns how many came in.
 std::size_t seed_islands(const MendContext& m, const std::vector<CellIsland>& islands,
@@ -57,14 +63,15 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   for (int round = 0; round < rounds; ++round) {
     std::size_t changed = 0;
     if (!constraints.empty()) {
-      std::vector<FeatureLink> missing =
-          missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh);
       // Links one edge flip makes are left to the flips after the rounds; seeds move or come
       // in for the others.
-      TriangleMesh flipped = output.mesh;
-      std::erase_if(missing, [&](const FeatureLink& link) {
-        return flip_in_links(flipped, {link.seeds}) == 1;
-      });
+      const std::vector<FeatureLink> cut =
+          missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh);
+      TriangleMesh trial = output.mesh;
+      const std::vector<bool> flippable = flip_in_links(trial, link_seeds(cut));
+      std::vector<FeatureLink> missing;
+      for (std::size_t k = 0; k < cut.size(); ++k)
+        if (!flippable[k]) missing.push_back(cut[k]);
       const std::size_t mended =
           mend_missing_links(seeds, constraints, missing, m.curves, m.spacing);
       report.links_mended += mended;
@@ -83,11 +90,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     report.polish_rounds += output.rounds;
   }
   if (!constraints.empty()) {
-    std::vector<Edge> missing;
-    for (const FeatureLink& link :
-         missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh))
-      missing.push_back(link.seeds);
-    report.links_flipped = flip_in_links(output.mesh, missing);
+    const std::vector<bool> flipped = flip_in_links(
+        output.mesh, link_seeds(missing_links(
+                         feature_links(seeds, constraints, m.features, m.curves), output.mesh)));
+    report.links_flipped =
+        static_cast<std::size_t>(std::count(flipped.begin(), flipped.end(), true));
   }
   return output;
 }
