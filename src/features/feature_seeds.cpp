@@ -193,9 +193,7 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
       stray = static_cast<Index>(seeds.size());
       seeds.push_back(middle);
       moved.push_back(false);
-      c.kind.push_back(SeedConstraints::Kind::curve);
-      c.curve.push_back(0);
-      c.anchor.push_back({});
+      c.append(SeedConstraints::Kind::curve);
     }
     seeds[stray] = middle;
     moved[stray] = true;

@@ -18,6 +18,12 @@ struct SeedConstraints {
   std::vector<Index> corner_seed;    // per input corner (Features::corners order): its seed
 
   bool empty() const { return kind.empty(); }
+  // The constraints of one more seed, at the end.
+  void append(Kind k, std::uint32_t on_curve = 0, const Vec3& at_corner = {}) {
+    kind.push_back(k);
+    curve.push_back(on_curve);
+    anchor.push_back(at_corner);
+  }
 };
 
 // Replaces seeds by feature seeds: each corner, and points at about `spacing` along each curve

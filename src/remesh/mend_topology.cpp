@@ -36,11 +36,7 @@ std::size_t seed_islands(const MendContext& m, const std::vector<CellIsland>& is
     const Vec3 p = m.projector.nearest(island.centroid).point;
     if (!occupied.insert(p).second) continue;
     seeds.push_back(p);
-    if (!constraints.empty()) {
-      constraints.kind.push_back(SeedConstraints::Kind::surface);
-      constraints.curve.push_back(0);
-      constraints.anchor.push_back({});
-    }
+    if (!constraints.empty()) constraints.append(SeedConstraints::Kind::surface);
     ++added;
   }
   return added;
@@ -60,43 +56,46 @@ std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
 
 PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::vector<Vec3>& seeds,
                              SeedConstraints& constraints, int rounds, MendReport& report) {
-  for (int round = 0; round < rounds; ++round) {
-    std::size_t changed = 0;
+  for (int round = 0;; ++round) {
+    // The links one edge flip makes: flipped in if this output is the last, and otherwise left
+    // to the flips then; seeds move or come in for the others.
+    std::vector<FeatureLink> missing;
+    TriangleMesh flipped;
+    std::vector<bool> made;
     if (!constraints.empty()) {
-      // Links one edge flip makes are left to the flips after the rounds; seeds move or come
-      // in for the others.
       const std::vector<FeatureLink> cut =
           missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh);
-      TriangleMesh trial = output.mesh;
-      const std::vector<bool> flippable = flip_in_links(trial, link_seeds(cut));
-      std::vector<FeatureLink> missing;
+      flipped = output.mesh;
+      made = flip_in_links(flipped, link_seeds(cut));
       for (std::size_t k = 0; k < cut.size(); ++k)
-        if (!flippable[k]) missing.push_back(cut[k]);
-      const std::size_t mended =
-          mend_missing_links(seeds, constraints, missing, m.curves, m.spacing);
-      report.links_mended += mended;
-      changed += mended;
+        if (!made[k]) missing.push_back(cut[k]);
     }
-    // The cells' pieces cost one more RVD: only when the output shows a defect.
-    const TopologyReport t = analyze_topology(output.mesh);
-    if (!t.is_manifold() || !same_topology(t, m.surface_topology)) {
-      const std::size_t added = seed_islands(m, cell_islands(m.surface, seeds), seeds, constraints);
-      report.islands += added;
-      changed += added;
+    std::size_t changed = 0;
+    if (round < rounds) {
+      if (!missing.empty()) {
+        const std::size_t mended =
+            mend_missing_links(seeds, constraints, missing, m.curves, m.spacing);
+        report.links_mended += mended;
+        changed += mended;
+      }
+      // The cells' pieces cost one more RVD: only when the output shows a defect.
+      const TopologyReport t = analyze_topology(output.mesh);
+      if (!t.is_manifold() || !same_topology(t, m.surface_topology)) {
+        const std::size_t added =
+            seed_islands(m, cell_islands(m.surface, seeds), seeds, constraints);
+        report.islands += added;
+        changed += added;
+      }
     }
-    if (changed == 0) break;
+    if (changed == 0) {
+      if (!constraints.empty()) output.mesh = std::move(flipped);
+      report.links_flipped = static_cast<std::size_t>(std::count(made.begin(), made.end(), true));
+      return output;
+    }
     ++report.rounds;
     output = extract_polished(m.surface, seeds, m.placement, m.polish);
     report.polish_rounds += output.rounds;
   }
-  if (!constraints.empty()) {
-    const std::vector<bool> flipped = flip_in_links(
-        output.mesh, link_seeds(missing_links(
-                         feature_links(seeds, constraints, m.features, m.curves), output.mesh)));
-    report.links_flipped =
-        static_cast<std::size_t>(std::count(flipped.begin(), flipped.end(), true));
-  }
-  return output;
 }
 
 }  // namespace cvtmesh
