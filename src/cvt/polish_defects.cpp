@@ -39,6 +39,15 @@ class CellCoverage : public PolygonSink {
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
+  // The seeds whose cells cover any of `triangles` (sorted), sorted and without repeats.
+  std::vector<Index> cells_on(const std::vector<Index>& triangles) const {
+    std::vector<Index> out;
+    for (const auto& [seed, triangle] : pairs_)
+      if (std::binary_search(triangles.begin(), triangles.end(), triangle)) out.push_back(seed);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
 
  private:
   std::vector<std::vector<std::pair<Index, Index>>> chunks_;
@@ -98,8 +107,9 @@ TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& 
 
 // Lloyd steps on the seeds `moving`: each goes to its cell's centroid, under its constraint,
 // until the triangles among them have no defect, or after `steps` steps. The cells are
-// computed over `patch` (the input triangles around them) among the seeds `local` (the moving
-// seeds and enough rings around them to shape those cells), which also gives their triangles.
+// computed over `patch` (the input triangles around them) among the seeds `local` (every seed
+// whose cell covers part of the patch, so the moving cells are exact), which also gives their
+// triangles.
 void local_lloyd(const TriangleMesh& patch, const std::vector<Index>& local,
                  const std::vector<Index>& moving, std::vector<Vec3>& seeds,
                  const CvtObjective& objective, int steps) {
@@ -161,12 +171,16 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
       return out;
     ++out.rounds;
     moving = std::move(movable);
-    // One more ring of cells gives the moving cells room to shift within the patch, and one
-    // more shapes the patch's cells.
+    // One more ring of cells gives the moving cells room to shift within the patch. Every
+    // seed whose cell covers part of the patch takes part, so that each point of the patch goes
+    // to its true nearest seed: an input triangle far larger than a cell (a CAD facet) reaches
+    // far beyond the rings, and its far parts would otherwise swell whichever local cell is
+    // nearest, pulling that seed's centroid away by many cells.
     const std::vector<Index> margin = grown(moving, out.mesh);
-    const std::vector<Index> local = grown(margin, out.mesh);
-    const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin));
-    local_lloyd(patch, local, moving, seeds, objective, settings.steps);
+    const std::vector<Index> patch_triangles = coverage.triangles_of(margin);
+    const TriangleMesh patch = sub_surface(surface, patch_triangles);
+    local_lloyd(patch, coverage.cells_on(patch_triangles), moving, seeds, objective,
+                settings.steps);
   }
 }
 
