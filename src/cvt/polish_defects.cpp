@@ -32,18 +32,21 @@ class CellCoverage : public PolygonSink {
   // The triangles covered by any of `cells` (sorted), sorted and without repeats. One scan, only
   // in rounds that found defects: most extractions never ask.
   std::vector<Index> triangles_of(const std::vector<Index>& cells) const {
-    std::vector<Index> out;
-    for (const auto& [seed, triangle] : pairs_)
-      if (std::binary_search(cells.begin(), cells.end(), seed)) out.push_back(triangle);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
+    return other_sides(cells, &std::pair<Index, Index>::first);
   }
   // The seeds whose cells cover any of `triangles` (sorted), sorted and without repeats.
   std::vector<Index> cells_on(const std::vector<Index>& triangles) const {
+    return other_sides(triangles, &std::pair<Index, Index>::second);
+  }
+
+ private:
+  // The other side of each pair whose side `side` is in `keys` (sorted).
+  std::vector<Index> other_sides(const std::vector<Index>& keys,
+                                 Index std::pair<Index, Index>::*side) const {
     std::vector<Index> out;
-    for (const auto& [seed, triangle] : pairs_)
-      if (std::binary_search(triangles.begin(), triangles.end(), triangle)) out.push_back(seed);
+    for (const auto& pair : pairs_)
+      if (std::binary_search(keys.begin(), keys.end(), pair.*side))
+        out.push_back(side == &std::pair<Index, Index>::first ? pair.second : pair.first);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
