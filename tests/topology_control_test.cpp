@@ -11,6 +11,7 @@
 #include "features/curve_projector.hpp"
 #include "features/feature_seeds.hpp"
 #include "remesh/flip_links.hpp"
+#include "remesh/mend_topology.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
@@ -118,14 +119,14 @@ bool has_edge(const TriangleMesh& m, Index a, Index b) {
 
 TEST(FlipInLinks, OneFlipMakesTheOtherDiagonal) {
   TriangleMesh m = split_square();
-  EXPECT_EQ(flip_in_links(m, {{0, 2}}), std::vector<bool>{true});
+  EXPECT_EQ(flip_in_links(m, {{0, 2}}, 15), std::vector<bool>{true});
   EXPECT_TRUE(has_edge(m, 0, 2));
   EXPECT_FALSE(has_edge(m, 1, 3));
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {  // still facing +z, as before
     const auto [a, b, c] = m.corners(t);
     EXPECT_GT(cross(b - a, c - a).z, 0);
   }
-  EXPECT_EQ(flip_in_links(m, {{0, 2}}), std::vector<bool>{false});  // there already
+  EXPECT_EQ(flip_in_links(m, {{0, 2}}, 15), std::vector<bool>{false});  // there already
 }
 
 TEST(FlipInLinks, NoFlipThatFoldsMakesSliversOrIsOnANonManifoldEdge) {
@@ -133,26 +134,97 @@ TEST(FlipInLinks, NoFlipThatFoldsMakesSliversOrIsOnANonManifoldEdge) {
   TriangleMesh dart = split_square();
   dart.vertices[2] = {2, -0.5, 0};  // reflex at vertex 1
   ASSERT_GT(cross(dart.vertices[1] - dart.vertices[3], dart.vertices[2] - dart.vertices[3]).z, 0);
-  EXPECT_EQ(flip_in_links(dart, {{0, 2}}), std::vector<bool>{false});
+  EXPECT_EQ(flip_in_links(dart, {{0, 2}}, 15), std::vector<bool>{false});
   EXPECT_EQ(dart.triangles, split_square().triangles);
   // A third triangle on the diagonal: no flip there.
   TriangleMesh fin = split_square();
   fin.vertices.push_back({0.5, 0.5, 1});
   fin.triangles.push_back({1, 3, 4});
-  EXPECT_EQ(flip_in_links(fin, {{0, 2}}), std::vector<bool>{false});
+  EXPECT_EQ(flip_in_links(fin, {{0, 2}}, 15), std::vector<bool>{false});
   // A flat kite whose other diagonal is long: the flip would make 5.7° slivers.
   TriangleMesh kite;
   kite.vertices = {{0, 0, 0}, {1, -0.1, 0}, {2, 0, 0}, {1, 0.1, 0}};
   kite.triangles = {{0, 1, 3}, {3, 1, 2}};
-  EXPECT_EQ(flip_in_links(kite, {{0, 2}}), std::vector<bool>{false});
-  kite.vertices[1] = {1, -1, 0};  // now a square: it flips
-  kite.vertices[3] = {1, 1, 0};
-  EXPECT_EQ(flip_in_links(kite, {{0, 2}}), std::vector<bool>{true});
+  EXPECT_EQ(flip_in_links(kite, {{0, 2}}, 15), std::vector<bool>{false});
+  // Wider, 21.8° at its long diagonal's ends: it flips only where that angle is allowed.
+  kite.vertices[1] = {1, -0.4, 0};
+  kite.vertices[3] = {1, 0.4, 0};
+  EXPECT_EQ(flip_in_links(kite, {{0, 2}}, 30), std::vector<bool>{false});
+  EXPECT_EQ(flip_in_links(kite, {{0, 2}}, 15), std::vector<bool>{true});
   // Two flips away: not this step's job.
   TriangleMesh strip;
   strip.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
   strip.triangles = {{0, 1, 3}, {3, 1, 4}, {1, 2, 4}, {4, 2, 5}};
-  EXPECT_EQ(flip_in_links(strip, {{0, 5}}), std::vector<bool>{false});
+  EXPECT_EQ(flip_in_links(strip, {{0, 5}}, 15), std::vector<bool>{false});
+}
+
+// The seeds of a remesh of `box` with features, and what each is bound to (read back from where
+// it lies: corners exactly, curve seeds exactly on their curve).
+SeedConstraints constraints_of(const std::vector<Vec3>& seeds, const TriangleMesh& box,
+                               const Features& features, const CurveProjector& curves) {
+  SeedConstraints c;
+  for (const Vec3& p : seeds) {
+    const auto corner = std::find_if(features.corners.begin(), features.corners.end(),
+                                     [&](Index v) { return box.vertices[v] == p; });
+    if (corner != features.corners.end()) {
+      c.append(SeedConstraints::Kind::corner, 0, p);
+      continue;
+    }
+    std::uint32_t on = 0;
+    while (on < curves.size() && norm(curves.nearest(on, p).point - p) > 1e-12) ++on;
+    c.append(on < curves.size() ? SeedConstraints::Kind::curve : SeedConstraints::Kind::surface,
+             on < curves.size() ? on : 0);
+  }
+  for (Index v : features.corners)
+    c.corner_seed.push_back(
+        static_cast<Index>(std::find(seeds.begin(), seeds.end(), box.vertices[v]) - seeds.begin()));
+  return c;
+}
+
+TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliver) {
+  const TriangleMesh box = cube(4);
+  RemeshSettings s;
+  s.vertices = 400;
+  std::vector<Vec3> seeds = remesh(box, s).mesh.vertices;
+  const Features features = detect_features(box, {});
+  const CurveProjector curves(box, features);
+  SeedConstraints c = constraints_of(seeds, box, features, curves);
+  ASSERT_TRUE(std::none_of(c.corner_seed.begin(), c.corner_seed.end(), [&](Index k) {
+    return k == seeds.size();
+  })) << "a corner is not a seed";
+  const std::vector<FeatureLink> links = feature_links(seeds, c, features, curves);
+  // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's
+  // length off the crease: it cuts the link, and flipping the link in would leave 26.6°.
+  const FeatureLink& link = links[links.size() / 2];
+  const Vec3 middle = curves.at(link.curve, (link.from + link.to) / 2);
+  Index stray = 0;
+  for (Index k = 0; k < seeds.size(); ++k)
+    if (c.kind[k] == SeedConstraints::Kind::surface &&
+        (c.kind[stray] != SeedConstraints::Kind::surface ||
+         norm(seeds[k] - middle) < norm(seeds[stray] - middle)))
+      stray = k;
+  const Vec3 a = seeds[link.seeds[0]], b = seeds[link.seeds[1]];
+  const Vec3 off = seeds[stray] - middle;
+  const Vec3 across = off - dot(off, b - a) / dot(b - a, b - a) * (b - a);
+  seeds[stray] = middle + 0.25 * norm(b - a) / norm(across) * across;
+
+  const SurfaceProjector projector(box);
+  const CvtObjective placement(box, &projector, &c, &curves);
+  const TopologyReport topology = analyze_topology(box);
+  const PolishSettings polish{0, 0};
+  const MendContext context{box, topology, features, curves, projector, placement, 0.25, polish};
+  PolishedOutput output = extract_polished(box, seeds, placement, polish);
+  TriangleMesh flipped = output.mesh;
+  ASSERT_EQ(flip_in_links(flipped, {link.seeds}, 15), std::vector<bool>{true})
+      << "the flip this test is about";
+  MendReport report;
+  output = mend_topology(context, std::move(output), seeds, c, 3, report);
+  EXPECT_EQ(c.kind[stray], SeedConstraints::Kind::curve);
+  EXPECT_GE(report.links_mended, 1u);
+  EXPECT_EQ(report.links_flipped, 0u);
+  // The crease is traced through it.
+  EXPECT_TRUE(has_edge(output.mesh, link.seeds[0], stray));
+  EXPECT_TRUE(has_edge(output.mesh, stray, link.seeds[1]));
 }
 
 TEST(TopologyControl, AThinPlateComesOutHomeomorphic) {

@@ -8,11 +8,6 @@ namespace cvtmesh {
 
 namespace {
 
-// A flip that would leave a smaller angle than this is not made: below it, a crease traced
-// exactly costs a sliver where the untraced one is a few tenths of a percent off (and where the
-// features are finer than the triangles, flips would make slivers by the dozen).
-constexpr double kSmallestFlippedAngleDeg = 15;
-
 Vec3 normal(const TriangleMesh& m, const Triangle& t) {
   const Vec3& a = m.vertices[t[0]];
   return cross(m.vertices[t[1]] - a, m.vertices[t[2]] - a);
@@ -47,8 +42,8 @@ bool has_edge(const TriangleMesh& m, const VertexTriangles& at, Index a, Index b
                      [&](Index t) { return position(m.triangles[t], b) != 3; });
 }
 
-// Flips in edge (a, b) if one flip makes it; whether it did.
-bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b) {
+// Flips in edge (a, b) if one flip makes it with no angle under `min_angle`; whether it did.
+bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b, double min_angle) {
   for (const Index t1 : at(a)) {
     const Triangle& first = m.triangles[t1];
     const int k = position(first, a);
@@ -65,9 +60,7 @@ bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b) {
     const Triangle new1{a, c, b}, new2{a, b, d};
     const Vec3 facing = normal(m, first) + normal(m, second);
     if (!(dot(normal(m, new1), facing) > 0 && dot(normal(m, new2), facing) > 0)) continue;
-    if (smallest_angle(m, new1) < kSmallestFlippedAngleDeg ||
-        smallest_angle(m, new2) < kSmallestFlippedAngleDeg)
-      continue;
+    if (smallest_angle(m, new1) < min_angle || smallest_angle(m, new2) < min_angle) continue;
     m.triangles[t1] = new1;
     m.triangles[t2] = new2;
     at.add(a, t2);
@@ -81,12 +74,13 @@ bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b) {
 
 }  // namespace
 
-std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links) {
+std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links,
+                                double min_angle_deg) {
   VertexTriangles at(mesh);
   std::vector<bool> flipped;
   for (const auto& [a, b] : links)
     // Orientation makes (a, b) and (b, a) the same search.
-    flipped.push_back(!has_edge(mesh, at, a, b) && flip_in(mesh, at, a, b));
+    flipped.push_back(!has_edge(mesh, at, a, b) && flip_in(mesh, at, a, b, min_angle_deg));
   return flipped;
 }
 

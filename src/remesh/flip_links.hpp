@@ -13,8 +13,9 @@ namespace cvtmesh {
 
 // For each edge (a, b) of `links` not in `mesh`: where two triangles (a, c, d) and (d, c, b)
 // share edge (c, d) and no other triangle does, they become (a, c, b) and (a, b, d), if both
-// new triangles face the way the two old ones do (no fold) and have no angle under 15°.
-// Returns, per link, whether a flip made it.
-std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links);
+// new triangles face the way the two old ones do (no fold) and have no angle under
+// `min_angle_deg`. Returns, per link, whether a flip made it.
+std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links,
+                                double min_angle_deg);
 
 }  // namespace cvtmesh

@@ -34,10 +34,11 @@ struct MendReport {
 
 // Up to `rounds` times, while the output misses links of the feature chains, or its topology
 // differs from the surface's (non-manifold, or other components, Euler characteristic or
-// boundary loops): mends the links no single edge flip makes (mend_missing_links), puts a new
-// surface seed in each extra piece of a cell (cell_islands), and extracts again (polishing around
-// the new seeds). Links still missing then are flipped in where one edge flip makes them
-// (flip_in_links). Returns the last extraction. Seeds and constraints grow by the seeds added.
+// boundary loops): mends the links no single well-shaped edge flip makes (mend_missing_links),
+// puts a new surface seed in each extra piece of a cell (cell_islands), and extracts again
+// (polishing around the new seeds). Then the links still missing are flipped in where one edge
+// flip makes them (flip_in_links): with no angle under 30°, or, for links the rounds could not
+// mend, 15°. Returns the last extraction. Seeds and constraints grow by the seeds added.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,
