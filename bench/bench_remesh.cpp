@@ -7,6 +7,10 @@
 //   BM_CgalIsotropic/<mesh>: CGAL's isotropic_remeshing (Botsch-Kobbelt, 3 iterations, as in
 //     CGAL's examples) with the edge length that gives about 10k vertices (calibrated by one
 //     untimed run); the same figures, and time_ratio = ours / CGAL's when BM_Remesh ran first.
+//   BM_RemeshCoarseFacets: a cube of 12 triangles to 100k vertices, no sharp edges: each input
+//     triangle is thousands of cells wide, the case where polishing's local RVDs must not grow
+//     with the triangles (they once took 18 s here for CCVT's 6): extraction_over_ccvt = the
+//     extraction's time (triangulation, polishing) over CCVT's, and the output's quality.
 //   BM_LloydVsLbfgs: RCVT of bunny to 2k vertices; L-BFGS for 20 iterations, then Lloyd until
 //     it reaches the same energy: RVD evaluations and seconds of each.
 // Meshes: ../shared/data/{bunny.off, igea.ply}; cases skip when they are absent.
@@ -30,6 +34,7 @@
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
+#include "support/shapes.hpp"
 #include "support/shared_data.hpp"
 
 namespace {
@@ -162,6 +167,24 @@ BENCHMARK(BM_CgalIsotropic)
     ->UseManualTime()
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+
+void BM_RemeshCoarseFacets(benchmark::State& state) {
+  const TriangleMesh cube = testing::cube(1);
+  for (auto _ : state) {
+    RemeshSettings s;
+    s.vertices = 100'000;
+    s.features.sharp_edges = false;
+    const RemeshResult r = remesh(cube, s);
+    state.SetIterationTime(r.seconds_extraction);
+    state.counters["extraction_s"] = r.seconds_extraction;
+    state.counters["extraction_over_ccvt"] = r.seconds_extraction / r.seconds_ccvt;
+    state.counters["defects_polished"] = static_cast<double>(r.defects_polished);
+    const QualityReport q = measure_quality(r.mesh);
+    state.counters["q_min"] = q.q_min;
+    state.counters["angle_min_deg"] = q.angle_min_deg;
+  }
+}
+BENCHMARK(BM_RemeshCoarseFacets)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
 
 void BM_LloydVsLbfgs(benchmark::State& state) {
   const TriangleMesh* bunny = load(state, "bunny.off");

@@ -1,9 +1,12 @@
 #include "cvt/polish_defects.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <iterator>
 #include <limits>
 
 #include "cvtmesh/quality.hpp"
+#include "geometry/point_tree.hpp"
 
 namespace cvtmesh {
 
@@ -32,21 +35,9 @@ class CellCoverage : public PolygonSink {
   // The triangles covered by any of `cells` (sorted), sorted and without repeats. One scan, only
   // in rounds that found defects: most extractions never ask.
   std::vector<Index> triangles_of(const std::vector<Index>& cells) const {
-    return other_sides(cells, &std::pair<Index, Index>::first);
-  }
-  // The seeds whose cells cover any of `triangles` (sorted), sorted and without repeats.
-  std::vector<Index> cells_on(const std::vector<Index>& triangles) const {
-    return other_sides(triangles, &std::pair<Index, Index>::second);
-  }
-
- private:
-  // The other side of each pair whose side `side` is in `keys` (sorted).
-  std::vector<Index> other_sides(const std::vector<Index>& keys,
-                                 Index std::pair<Index, Index>::*side) const {
     std::vector<Index> out;
-    for (const auto& pair : pairs_)
-      if (std::binary_search(keys.begin(), keys.end(), pair.*side))
-        out.push_back(side == &std::pair<Index, Index>::first ? pair.second : pair.first);
+    for (const auto& [seed, triangle] : pairs_)
+      if (std::binary_search(cells.begin(), cells.end(), seed)) out.push_back(triangle);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -108,25 +99,78 @@ TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& 
   return sub;
 }
 
+// The polygon corners of the cells of some seeds (by their index in the RVD's seed list).
+class CellCorners : public PolygonSink {
+ public:
+  explicit CellCorners(std::function<bool(Index)> wanted) : wanted_(std::move(wanted)) {}
+  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    if (!wanted_(p.seed)) return;
+    for (const RvdVertex& v : p.vertices) chunks_[chunk].push_back({p.seed, v.point});
+  }
+  // Per chunk, in order: (seed, corner) pairs.
+  const std::vector<std::vector<std::pair<Index, Vec3>>>& chunks() const { return chunks_; }
+
+ private:
+  std::function<bool(Index)> wanted_;
+  std::vector<std::vector<std::pair<Index, Vec3>>> chunks_;
+};
+
+// The seeds not in `local` (sorted) that are nearer to a corner of a local cell than that cell's
+// seed (at `positions`): the local RVD gave the cell a part that is theirs. `tree` holds all the
+// seeds at `fixed`, their positions before this round's steps (only local seeds move).
+std::vector<Index> intruders(const CellCorners& corners, const std::vector<Index>& local,
+                             const std::vector<Vec3>& positions, const PointTree& tree,
+                             const std::vector<Vec3>& fixed) {
+  std::vector<Index> out, near;
+  for (const auto& chunk : corners.chunks())
+    for (const auto& [k, corner] : chunk) {
+      const double r2 = dot(corner - positions[k], corner - positions[k]);
+      tree.within(corner, r2, near);
+      for (Index s : near)
+        if (dot(fixed[s] - corner, fixed[s] - corner) < r2 &&
+            !std::binary_search(local.begin(), local.end(), s))
+          out.push_back(s);
+    }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 // Lloyd steps on the seeds `moving`: each goes to its cell's centroid, under its constraint,
 // until the triangles among them have no defect, or after `steps` steps. The cells are
-// computed over `patch` (the input triangles around them) among the seeds `local` (every seed
-// whose cell covers part of the patch, so the moving cells are exact), which also gives their
-// triangles.
-void local_lloyd(const TriangleMesh& patch, const std::vector<Index>& local,
+// computed over `patch` (the input triangles around them) among the seeds `local` (the moving
+// seeds and enough rings around them to shape those cells), which also gives their triangles.
+// An input triangle far larger than a cell (a CAD facet) reaches beyond those rings: the local
+// RVD would give its far parts to the nearest local cell, whose centroid would then pull its
+// seed many cells away. So any seed nearer to a corner of a moving cell joins `local`, and the
+// step is computed again, until the moving cells are exact.
+void local_lloyd(const TriangleMesh& patch, std::vector<Index> local,
                  const std::vector<Index>& moving, std::vector<Vec3>& seeds,
-                 const CvtObjective& objective, int steps) {
-  const auto is_moving = [&](Index k) {
-    return std::binary_search(moving.begin(), moving.end(), local[k]);
-  };
-  std::vector<Vec3> positions(local.size());
+                 const CvtObjective& objective, int steps, const PointTree& tree,
+                 const std::vector<Vec3>& fixed) {
+  std::vector<Vec3> positions;
   for (int step = 0; step < steps; ++step) {
+    const auto is_moving = [&](Index k) {
+      return std::binary_search(moving.begin(), moving.end(), local[k]);
+    };
+    positions.resize(local.size());
     for (std::size_t k = 0; k < local.size(); ++k) positions[k] = seeds[local[k]];
     const RestrictedVoronoiDiagram rvd(patch, positions);
     CellIntegrator integrator(rvd);
     RestrictedDelaunayBuilder rdt(rvd);
-    PolygonSink* sinks[] = {&integrator, &rdt};
+    CellCorners corners(is_moving);
+    PolygonSink* sinks[] = {&integrator, &rdt, &corners};
     rvd.traverse(sinks);
+    if (const std::vector<Index> more = intruders(corners, local, positions, tree, fixed);
+        !more.empty()) {
+      const std::vector<Index> fewer = std::move(local);
+      local.clear();
+      std::set_union(fewer.begin(), fewer.end(), more.begin(), more.end(),
+                     std::back_inserter(local));
+      --step;  // this step again, with them
+      continue;
+    }
     const TriangleMesh& around = rdt.result();
     if (std::none_of(around.triangles.begin(), around.triangles.end(), [&](const Triangle& t) {
           return std::all_of(t.begin(), t.end(), is_moving) && defective(around, t);
@@ -174,16 +218,14 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
       return out;
     ++out.rounds;
     moving = std::move(movable);
-    // One more ring of cells gives the moving cells room to shift within the patch. Every
-    // seed whose cell covers part of the patch takes part, so that each point of the patch goes
-    // to its true nearest seed: an input triangle far larger than a cell (a CAD facet) reaches
-    // far beyond the rings, and its far parts would otherwise swell whichever local cell is
-    // nearest, pulling that seed's centroid away by many cells.
+    // One more ring of cells gives the moving cells room to shift within the patch, and one
+    // more shapes the patch's cells.
     const std::vector<Index> margin = grown(moving, out.mesh);
-    const std::vector<Index> patch_triangles = coverage.triangles_of(margin);
-    const TriangleMesh patch = sub_surface(surface, patch_triangles);
-    local_lloyd(patch, coverage.cells_on(patch_triangles), moving, seeds, objective,
-                settings.steps);
+    const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin));
+    const std::vector<Vec3> fixed = seeds;
+    const PointTree tree(fixed);
+    local_lloyd(patch, grown(margin, out.mesh), moving, seeds, objective, settings.steps, tree,
+                fixed);
   }
 }
 
