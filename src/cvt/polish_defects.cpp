@@ -149,11 +149,11 @@ void local_lloyd(const TriangleMesh& patch, std::vector<Index> local,
                  const std::vector<Index>& moving, std::vector<Vec3>& seeds,
                  const CvtObjective& objective, int steps, const PointTree& tree,
                  const std::vector<Vec3>& fixed) {
+  const auto is_moving = [&](Index k) {
+    return std::binary_search(moving.begin(), moving.end(), local[k]);
+  };
   std::vector<Vec3> positions;
   for (int step = 0; step < steps; ++step) {
-    const auto is_moving = [&](Index k) {
-      return std::binary_search(moving.begin(), moving.end(), local[k]);
-    };
     positions.resize(local.size());
     for (std::size_t k = 0; k < local.size(); ++k) positions[k] = seeds[local[k]];
     const RestrictedVoronoiDiagram rvd(patch, positions);
@@ -164,10 +164,10 @@ void local_lloyd(const TriangleMesh& patch, std::vector<Index> local,
     rvd.traverse(sinks);
     if (const std::vector<Index> more = intruders(corners, local, positions, tree, fixed);
         !more.empty()) {
-      const std::vector<Index> fewer = std::move(local);
-      local.clear();
-      std::set_union(fewer.begin(), fewer.end(), more.begin(), more.end(),
-                     std::back_inserter(local));
+      std::vector<Index> joined;
+      std::set_union(local.begin(), local.end(), more.begin(), more.end(),
+                     std::back_inserter(joined));
+      local = std::move(joined);
       --step;  // this step again, with them
       continue;
     }
