@@ -258,7 +258,11 @@ TEST(RemeshFeaturesSharedData, JointAt3kKeepsCornersAndCreases) {
   const RemeshResult r = remesh_to(in, 3000);
   EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
   EXPECT_EQ(r.feature_edges_missing, 0u);
-  EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 25.0);  // the issue asks 31.89°
+  // The issue's targets (the paper's Table 1). Over seeds 1-6 θmin spans 30.3-35.2° and Qmin
+  // 0.53-0.62 (README); the default seed is held to the targets.
+  const QualityReport q = measure_quality(r.mesh);
+  EXPECT_GE(q.angle_min_deg, 31.89);
+  EXPECT_GE(q.q_min, 0.585);
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
 }
 

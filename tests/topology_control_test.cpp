@@ -193,30 +193,38 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
     return k == seeds.size();
   })) << "a corner is not a seed";
   const std::vector<FeatureLink> links = feature_links(seeds, c, features, curves);
-  // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's
-  // length off the crease: it cuts the link, and flipping the link in would leave 26.6°.
-  const FeatureLink& link = links[links.size() / 2];
-  const Vec3 middle = curves.at(link.curve, (link.from + link.to) / 2);
-  Index stray = 0;
-  for (Index k = 0; k < seeds.size(); ++k)
-    if (c.kind[k] == SeedConstraints::Kind::surface &&
-        (c.kind[stray] != SeedConstraints::Kind::surface ||
-         norm(seeds[k] - middle) < norm(seeds[stray] - middle)))
-      stray = k;
-  const Vec3 a = seeds[link.seeds[0]], b = seeds[link.seeds[1]];
-  const Vec3 off = seeds[stray] - middle;
-  const Vec3 across = off - dot(off, b - a) / dot(b - a, b - a) * (b - a);
-  seeds[stray] = middle + 0.25 * norm(b - a) / norm(across) * across;
-
   const SurfaceProjector projector(box);
   const CvtObjective placement(box, &projector, &c, &curves);
   const TopologyReport topology = analyze_topology(box);
   const PolishSettings polish{0, 0};
   const MendContext context{box, topology, features, curves, projector, placement, 0.25, polish};
-  PolishedOutput output = extract_polished(box, seeds, placement, polish);
-  TriangleMesh flipped = output.mesh;
-  ASSERT_EQ(flip_in_links(flipped, {link.seeds}, 15), std::vector<bool>{true})
-      << "the flip this test is about";
+  // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's
+  // length off the crease: it cuts the link, and flipping the link in would leave 26.6°. The
+  // links are tried from the middle of the list on, until one where that flip can be made.
+  const std::vector<Vec3> remeshed = seeds;
+  FeatureLink link{};
+  Index stray = 0;
+  PolishedOutput output;
+  bool flippable = false;
+  for (std::size_t k = 0; k < links.size() && !flippable; ++k) {
+    seeds = remeshed;
+    link = links[(links.size() / 2 + k) % links.size()];
+    const Vec3 middle = curves.at(link.curve, (link.from + link.to) / 2);
+    stray = 0;
+    for (Index i = 0; i < seeds.size(); ++i)
+      if (c.kind[i] == SeedConstraints::Kind::surface &&
+          (c.kind[stray] != SeedConstraints::Kind::surface ||
+           norm(seeds[i] - middle) < norm(seeds[stray] - middle)))
+        stray = i;
+    const Vec3 a = seeds[link.seeds[0]], b = seeds[link.seeds[1]];
+    const Vec3 off = seeds[stray] - middle;
+    const Vec3 across = off - dot(off, b - a) / dot(b - a, b - a) * (b - a);
+    seeds[stray] = middle + 0.25 * norm(b - a) / norm(across) * across;
+    output = extract_polished(box, seeds, placement, polish);
+    TriangleMesh flipped = output.mesh;
+    flippable = flip_in_links(flipped, {link.seeds}, 15) == std::vector<bool>{true};
+  }
+  ASSERT_TRUE(flippable) << "no link where the flip this test is about can be made";
   MendReport report;
   output = mend_topology(context, std::move(output), seeds, c, 3, report);
   EXPECT_EQ(c.kind[stray], SeedConstraints::Kind::curve);
