@@ -349,7 +349,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
        {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct", "same_topology",
         "iterations", "rvd_evaluations", "energy_initial", "energy_final", "gradient_norm_final",
         "defects_polished", "polish_rounds", "links_mended", "islands_seeded", "links_flipped",
-        "mend_rounds", "time_s", "timings"})
+        "tips_closed", "mend_rounds", "time_s", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_EQ(j["mend_rounds"], 0);  // a sphere this well sampled needs no topology control

@@ -71,6 +71,18 @@ TEST(CurveLloyd, OpenCurveSeedsSpreadEvenlyBetweenItsCornersAndKeepTheirOrder) {
   EXPECT_EQ(seeds[at.size() + 1], before[at.size() + 1]);
 }
 
+TEST(CurveLloyd, ASeedOnTopOfACornerMovesOffIt) {
+  // CCVT can slide a curve seed to within a hair of its curve's end, onto the corner there: the
+  // output then had a 0° triangle (holes.off at 3k). One step moves it a quarter of the way to
+  // its neighbour.
+  const CurveSetup s(testing::cube(4));
+  const double length = s.curves.length(0);
+  SeedConstraints c;
+  std::vector<Vec3> seeds = seeds_on(s, 0, {1e-15 * length, 0.5 * length}, c);
+  relax_curve_seeds(seeds, c, s.curves, 1);
+  EXPECT_GT(s.curves.nearest(0, seeds[0]).arclength, 0.12 * length);
+}
+
 TEST(CurveLloyd, ClosedCurveSeedsSpreadEvenlyAroundItKeepingTheirMean) {
   const CurveSetup s(testing::cylinder(8, 48));
   ASSERT_TRUE(s.curves.closed(0));

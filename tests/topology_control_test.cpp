@@ -158,6 +158,34 @@ TEST(FlipInLinks, NoFlipThatFoldsMakesSliversOrIsOnANonManifoldEdge) {
   EXPECT_EQ(flip_in_links(strip, {{0, 5}}, 15), std::vector<bool>{false});
 }
 
+// A boundary tip: triangle (0, 1, 2) and corner 3 past its edge (0, 1), used by no triangle.
+TriangleMesh tip_with_corner_at(const Vec3& corner) {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {0, 1, 0}, {-1, 0.5, 0}, corner};
+  m.triangles = {{0, 1, 2}};
+  return m;
+}
+
+TEST(CloseCornerTips, ACornerWithoutTrianglesGetsTheOneItsLinksBound) {
+  TriangleMesh m = tip_with_corner_at({1, 0.5, 0});
+  EXPECT_EQ(close_corner_tips(m, {3}, {{0, 3}, {1, 3}}), 1u);
+  ASSERT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.triangles[1], (Triangle{1, 0, 3}));  // runs edge (0, 1) the other way round
+  EXPECT_TRUE(analyze_topology(m).is_manifold());
+  EXPECT_EQ(close_corner_tips(m, {3}, {{0, 3}, {1, 3}}), 0u);  // it has one now
+}
+
+TEST(CloseCornerTips, NoTriangleThatFoldsOrWithoutTwoLinksOrOnAnInnerEdge) {
+  TriangleMesh folded = tip_with_corner_at({-2, 0.5, 0});  // on the triangle's side
+  EXPECT_EQ(close_corner_tips(folded, {3}, {{0, 3}, {1, 3}}), 0u);
+  TriangleMesh one_link = tip_with_corner_at({1, 0.5, 0});
+  EXPECT_EQ(close_corner_tips(one_link, {3}, {{0, 3}}), 0u);
+  TriangleMesh inner = tip_with_corner_at({1, 0.5, 0});
+  inner.vertices.push_back({1, 0.5, 1});
+  inner.triangles.push_back({1, 0, 4});  // edge (0, 1) has two triangles already
+  EXPECT_EQ(close_corner_tips(inner, {3}, {{0, 3}, {1, 3}}), 0u);
+}
+
 // The seeds of a remesh of `box` with features, and what each is bound to (read back from where
 // it lies: corners exactly, curve seeds exactly on their curve).
 SeedConstraints constraints_of(const std::vector<Vec3>& seeds, const TriangleMesh& box,

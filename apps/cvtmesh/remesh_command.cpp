@@ -104,6 +104,7 @@ int run_remesh(RemeshOptions o) {
     j["links_mended"] = r.links_mended;
     j["islands_seeded"] = r.islands_seeded;
     j["links_flipped"] = r.links_flipped;
+    j["tips_closed"] = r.tips_closed;
     j["mend_rounds"] = r.mend_rounds;
     // null when there are input features but no output feature edges (JSON has no infinity).
     j["feature_hausdorff_max_pct"] =
@@ -140,11 +141,11 @@ int run_remesh(RemeshOptions o) {
         "triangles polished in {} rounds\n",
         r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
         r.polish_rounds);
-    if (r.mend_rounds > 0 || r.links_flipped > 0)
+    if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
       fmt::print(
           "  topology  {} rounds of control: {} seeds added in split cells, {} on cut curves; {} "
-          "feature edges flipped in\n",
-          r.mend_rounds, r.islands_seeded, r.links_mended, r.links_flipped);
+          "feature edges flipped in, {} triangles added at boundary tips\n",
+          r.mend_rounds, r.islands_seeded, r.links_mended, r.links_flipped, r.tips_closed);
   }
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;

@@ -46,7 +46,8 @@ struct RemeshSettings {
 
 struct RemeshResult {
   // The restricted Delaunay triangulation of the final seeds; where a feature link is missing
-  // and one edge flip makes it, flipped (links_flipped).
+  // and one edge flip makes it, flipped (links_flipped); a corner at a boundary tip that it
+  // leaves without a triangle gets the one its two links bound (tips_closed).
   TriangleMesh mesh;
   int iterations = 0;       // over all phases
   int rvd_evaluations = 0;  // RVD computations (energy + gradient evaluations)
@@ -68,6 +69,7 @@ struct RemeshResult {
   std::size_t links_mended = 0;
   std::size_t islands_seeded = 0;
   std::size_t links_flipped = 0;  // links still missing after that, made by one edge flip
+  std::size_t tips_closed = 0;    // triangles added at corners of boundary tips
   int mend_rounds = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it
 };

@@ -84,4 +84,32 @@ std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& lin
   return flipped;
 }
 
+std::size_t close_corner_tips(TriangleMesh& mesh, const std::vector<Index>& corners,
+                              const std::vector<Edge>& links) {
+  VertexTriangles at(mesh);
+  std::size_t added = 0;
+  for (const Index corner : corners) {
+    if (!at(corner).empty()) continue;
+    std::vector<Index> ends;  // the other ends of the corner's links
+    for (const auto& [a, b] : links)
+      if (a == corner || b == corner) ends.push_back(a == corner ? b : a);
+    if (ends.size() != 2) continue;
+    std::vector<Index> on_edge;  // the triangles on edge (ends[0], ends[1])
+    for (const Index t : at(ends[0]))
+      if (position(mesh.triangles[t], ends[1]) != 3) on_edge.push_back(t);
+    if (on_edge.size() != 1) continue;
+    // The new triangle runs the shared edge the other way round, as orientation requires.
+    const Triangle& old = mesh.triangles[on_edge[0]];
+    const bool forward = old[(position(old, ends[0]) + 1) % 3] == ends[1];
+    const Triangle tip =
+        forward ? Triangle{ends[1], ends[0], corner} : Triangle{ends[0], ends[1], corner};
+    if (!(dot(normal(mesh, tip), normal(mesh, old)) > 0)) continue;
+    const auto t = static_cast<Index>(mesh.triangles.size());
+    mesh.triangles.push_back(tip);
+    for (const Index v : tip) at.add(v, t);
+    ++added;
+  }
+  return added;
+}
+
 }  // namespace cvtmesh

@@ -102,6 +102,10 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
             flip_in_links(flipped, link_seeds(missing), kSmallestFlipDeg);
         report.links_flipped = static_cast<std::size_t>(std::count(made.begin(), made.end(), true) +
                                                         std::count(last.begin(), last.end(), true));
+        std::vector<Edge> unmade;
+        for (std::size_t k = 0; k < missing.size(); ++k)
+          if (!last[k]) unmade.push_back(missing[k].seeds);
+        report.tips_closed = close_corner_tips(flipped, constraints.corner_seed, unmade);
         output.mesh = std::move(flipped);
       }
       return output;

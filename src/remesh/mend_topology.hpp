@@ -28,6 +28,7 @@ struct MendReport {
   std::size_t links_mended = 0;   // seeds that joined a curve, or came in on one
   std::size_t islands = 0;        // seeds added in the extra pieces of cells
   std::size_t links_flipped = 0;  // links still missing after the rounds, made by an edge flip
+  std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_tips)
   int rounds = 0;                 // rounds that changed the seeds
   int polish_rounds = 0;          // polishing rounds over all the extractions after the first
 };
@@ -38,7 +39,8 @@ struct MendReport {
 // puts a new surface seed in each extra piece of a cell (cell_islands), and extracts again
 // (polishing around the new seeds). Then the links still missing are flipped in where one edge
 // flip makes them (flip_in_links): with no angle under 30°, or, for links the rounds could not
-// mend, 15°. Returns the last extraction. Seeds and constraints grow by the seeds added.
+// mend, 15°, and corners left without a triangle at a boundary tip get theirs
+// (close_corner_tips). Returns the last extraction. Seeds and constraints grow by the seeds added.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,

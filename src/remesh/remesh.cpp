@@ -183,6 +183,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   result.links_mended = mends.links_mended;
   result.islands_seeded = mends.islands;
   result.links_flipped = mends.links_flipped;
+  result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
   result.mesh = std::move(output.mesh);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
