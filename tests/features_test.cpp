@@ -238,9 +238,10 @@ TEST(RemeshFeaturesSharedData, FandiskAt3kTracesEveryCrease) {
   const RemeshResult r = remesh_to(in, 3000, f);
   const QualityReport q = measure_quality(r.mesh);
   // The issue asks θmin ≥ 24.35° and Qmin ≥ 0.541 too, but two of fandisk's creases meet at a
-  // 19.4° tip: an output that traces both has a triangle no wider there (Q ≤ 0.49). θmin is
-  // held near that bound instead.
-  EXPECT_GE(q.angle_min_deg, 0.8 * narrowest_feature_sector_deg(in, r.features));
+  // 19.4° tip: an output that traces both has a triangle about as narrow there (the chords to
+  // the next seeds along the curved creases open it a little: 18.0-21.3° over seeds 1-4). θmin
+  // is held near that bound instead.
+  EXPECT_GE(q.angle_min_deg, 0.9 * narrowest_feature_sector_deg(in, r.features));
   EXPECT_GE(q.angle_min_avg_deg, 51.7);
   EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
   EXPECT_EQ(r.feature_edges_missing, 0u);
