@@ -132,7 +132,8 @@ int run_remesh(RemeshOptions o) {
       fmt::print(
           "  features  {} edges in {} curves, {}/{} corners kept, {} output feature edges ({} "
           "missing, {} mended), distance max {:.4f}% mean {:.4f}% of bbox diagonal; narrowest "
-          "angle between input features {:.2f}° (θmin of a faithful output is at most about that)\n",
+          "angle between input features {:.2f}° (θmin of a faithful output is at most about "
+          "that)\n",
           r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
           r.feature_edges.size(), r.feature_edges_missing, r.links_mended, 100 * fd.max / diagonal,
           100 * fd.mean / diagonal, sector);
