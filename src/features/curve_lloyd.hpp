@@ -13,8 +13,9 @@ namespace cvtmesh {
 // `steps` Jacobi steps of one-dimensional Lloyd with uniform density along each curve: each
 // curve seed moves, by arc length, to the middle of its 1D Voronoi cell, whose ends are halfway
 // to its neighbours along the curve (the corners at an open curve's ends stay put). Each step
-// keeps the seeds' order; a step spreads the unevenness over about two more seeds. A seed whose
-// new point another seed already occupies stays where it is.
+// keeps the seeds' order and averages each arc length with its neighbours' (weights 1/4, 1/2,
+// 1/4): a diffusion, so k steps smooth the spacing over about √(k/2) seeds either way. A seed
+// whose new point another seed already occupies stays where it is.
 void relax_curve_seeds(std::vector<Vec3>& seeds, const SeedConstraints& c,
                        const CurveProjector& curves, int steps);
 

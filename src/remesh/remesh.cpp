@@ -33,9 +33,9 @@ constexpr std::size_t kMaxVertices = 50'000'000;
 // curve seeds); one suffices in practice.
 constexpr int kSnapRounds = 3;
 
-// Steps of 1D Lloyd along the curves after CCVT: enough to spread each bunch of short links over
-// a dozen seeds, few enough that the curves keep the density CCVT gave them where it differs
-// (fully even spacing lost joint.off and triple_vierbein.obj 5-8° at 2k vertices).
+// Steps of 1D Lloyd along the curves after CCVT: enough to smooth each bunch of short links over
+// about four seeds either way, few enough that the curves keep the density CCVT gave them where it
+// differs (fully even spacing lost joint.off and triple_vierbein.obj 5-8° at 2k vertices).
 constexpr int kCurveLloydSteps = 30;
 
 // Rounds of topology control after extraction (each one an extraction); rarely more than one.
