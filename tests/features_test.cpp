@@ -267,7 +267,9 @@ TEST(RemeshFeaturesSharedData, JointAt3kKeepsCornersAndCreases) {
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
 }
 
-void expect_boundary_loops_kept(const TriangleMesh& in, const RemeshResult& r) {
+// Boundary loops, topology and every corner kept; the curves traced closely on average.
+void expect_boundary_loops_and_corners_kept(const TriangleMesh& in, const RemeshResult& r) {
+  EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
   const TopologyReport a = analyze_topology(r.mesh), b = analyze_topology(in);
   EXPECT_EQ(a.boundary_loops, b.boundary_loops);
   EXPECT_TRUE(same_topology(a, b));
@@ -281,11 +283,9 @@ TEST(RemeshFeaturesSharedData, SharkKeepsItsBoundaryLoops) {
   if (!std::filesystem::exists(shared_data() / "mech-holes-shark.off"))
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();
   const TriangleMesh in = shared_mesh("mech-holes-shark.off");
-  const RemeshResult r = remesh_to(in, 3000);
-  expect_boundary_loops_kept(in, r);
   // One corner is a 27° tip of a single input triangle, whose cell meets its neighbours'
   // only off the surface: it is kept by the triangle added there.
-  EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
+  expect_boundary_loops_and_corners_kept(in, remesh_to(in, 3000));
 }
 
 // Thin wedges next to its creases: without topology control, cells there come in two pieces
@@ -295,9 +295,8 @@ TEST(RemeshFeaturesSharedData, PlaneHolesKeepsItsBoundaryLoopsAndCreases) {
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();
   const TriangleMesh in = shared_mesh("plane_holes.obj");
   const RemeshResult r = remesh_to(in, 3000);
-  expect_boundary_loops_kept(in, r);
+  expect_boundary_loops_and_corners_kept(in, r);
   EXPECT_EQ(r.feature_edges_missing, 0u);
-  EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
 }
 
 }  // namespace
