@@ -27,16 +27,12 @@ std::vector<double> lloyd_step(const std::vector<double>& t, double length, bool
 
 void relax_curve_seeds(std::vector<Vec3>& seeds, const SeedConstraints& c,
                        const CurveProjector& curves, int steps) {
-  std::vector<std::vector<std::pair<double, Index>>> along(curves.size());
-  for (Index s = 0; s < seeds.size(); ++s)
-    if (c.kind[s] == SeedConstraints::Kind::curve)
-      along[c.curve[s]].push_back({curves.nearest(c.curve[s], seeds[s]).arclength, s});
+  const SeedsAlongCurves along = seeds_along_curves(seeds, c, curves);
   std::set<Vec3> occupied(seeds.begin(), seeds.end());
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    auto& seeds_on = along[k];
+    const auto& seeds_on = along[k];
     // A loop of fewer than three has no spacing to even (and place_feature_seeds gives it three).
     if (seeds_on.empty() || (curves.closed(k) && seeds_on.size() < 3)) continue;
-    std::sort(seeds_on.begin(), seeds_on.end());
     std::vector<double> t;
     for (const auto& [arclength, s] : seeds_on) t.push_back(arclength);
     for (int step = 0; step < steps; ++step) t = lloyd_step(t, curves.length(k), curves.closed(k));

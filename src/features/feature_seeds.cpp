@@ -126,19 +126,25 @@ std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
   return snapped;
 }
 
-std::vector<FeatureLink> feature_links(const std::vector<Vec3>& seeds, const SeedConstraints& c,
-                                       const Features& features, const CurveProjector& curves) {
-  std::vector<std::vector<std::pair<double, Index>>> along(curves.size());
+SeedsAlongCurves seeds_along_curves(const std::vector<Vec3>& seeds, const SeedConstraints& c,
+                                    const CurveProjector& curves) {
+  SeedsAlongCurves along(curves.size());
   for (Index s = 0; s < seeds.size(); ++s)
     if (c.kind[s] == SeedConstraints::Kind::curve)
       along[c.curve[s]].push_back({curves.nearest(c.curve[s], seeds[s]).arclength, s});
+  for (auto& on : along) std::sort(on.begin(), on.end());
+  return along;
+}
+
+std::vector<FeatureLink> feature_links(const std::vector<Vec3>& seeds, const SeedConstraints& c,
+                                       const Features& features, const CurveProjector& curves) {
+  SeedsAlongCurves along = seeds_along_curves(seeds, c, curves);
   auto corner_seed = [&](Index vertex) {
     const auto at = std::lower_bound(features.corners.begin(), features.corners.end(), vertex);
     return c.corner_seed[static_cast<std::size_t>(at - features.corners.begin())];
   };
   std::vector<FeatureLink> links;
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    std::sort(along[k].begin(), along[k].end());
     const bool closed = curves.closed(k);
     const auto& v = features.curves[k].vertices;
     if (!closed) {

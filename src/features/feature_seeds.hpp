@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "features/curve_projector.hpp"
@@ -39,6 +40,11 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
 // sample of a curve, samples `spacing`/8 apart) joins that curve. Returns how many did.
 std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
                              const CurveProjector& curves, double spacing);
+
+// Per curve, its curve seeds as (arc length of their projection, seed id), by arc length.
+using SeedsAlongCurves = std::vector<std::vector<std::pair<double, Index>>>;
+SeedsAlongCurves seeds_along_curves(const std::vector<Vec3>& seeds, const SeedConstraints& c,
+                                    const CurveProjector& curves);
 
 // A feature edge the output must have: seeds consecutive along a curve (corners at the ends),
 // ordered by their projections on it, and the stretch of the curve between them.
