@@ -39,6 +39,10 @@ struct RemeshSettings {
   // Rounds of local Lloyd steps around the output's badly shaped triangles (smallest angle
   // under 35° or Q under 0.65), after the optimization; 0 turns this off.
   int polish_rounds = 3;
+  // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
+  // output misses feature links or is not homeomorphic to the input, and triangulates again.
+  // The best output of all the rounds is kept; 0 turns the rounds off.
+  int topology_rounds = 3;
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
   // vertices, feature curves chains of output edges. Not applied with mode rcvt.
   FeatureSettings features;
@@ -62,10 +66,12 @@ struct RemeshResult {
   Features features;                      // of the input
   std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
   std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks
-  // Topology control (paper §4.4), at most 3 rounds, each triangulating and polishing again:
-  // seeds that joined a feature curve, or came in on one, where the output had cut it; and
-  // seeds added in the extra pieces of restricted cells split in several (where the output
-  // was not homeomorphic to the input).
+  // Topology control (paper §4.4), at most `topology_rounds` rounds, each triangulating and
+  // polishing again: seeds that joined a feature curve, or came in on one, where the output had
+  // cut it; and seeds added in the extra pieces of restricted cells split in several (where the
+  // output was not homeomorphic to the input). Counted up to the round whose output is kept:
+  // the best of all, by topology first (the input's, then fewest non-manifold edges and
+  // vertices), then corners kept, then links missing.
   std::size_t links_mended = 0;
   std::size_t islands_seeded = 0;
   std::size_t links_flipped = 0;  // links still missing after that, made by one edge flip

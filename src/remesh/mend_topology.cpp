@@ -1,7 +1,9 @@
 #include "remesh/mend_topology.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
+#include <tuple>
 
 #include "cvt/cell_islands.hpp"
 #include "remesh/flip_links.hpp"
@@ -51,6 +53,49 @@ std::size_t seed_islands(const MendContext& m, const std::vector<CellIsland>& is
   return added;
 }
 
+// An extraction, finished as it would be returned, and what it lacks: the links it cuts that
+// no well-shaped flip makes (left to the seeds), and whether its topology is the surface's.
+struct Assessment {
+  TriangleMesh finished;  // all the flips made, and the tips closed
+  std::vector<FeatureLink> missing;
+  bool topology_kept = true;
+  std::size_t links_flipped = 0, tips_closed = 0;
+  // Better outputs compare greater: the input's topology, then fewer non-manifold edges and
+  // vertices, then more corners, then fewer links missing.
+  std::tuple<bool, std::ptrdiff_t, std::size_t, std::ptrdiff_t> score;
+};
+
+Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vector<Vec3>& seeds,
+                  const SeedConstraints& constraints) {
+  Assessment a;
+  a.finished = rdt;
+  std::vector<FeatureLink> cut;
+  if (!constraints.empty())
+    cut = missing_links(feature_links(seeds, constraints, m.features, m.curves), rdt);
+  const std::vector<bool> made = flip_in_links(a.finished, link_seeds(cut), kWellShapedFlipDeg);
+  for (std::size_t k = 0; k < cut.size(); ++k)
+    if (!made[k]) a.missing.push_back(cut[k]);
+  // The last resort, for the links the seeds leave: worse flips, and triangles at tips.
+  const std::vector<bool> last = flip_in_links(a.finished, link_seeds(a.missing), kSmallestFlipDeg);
+  std::vector<Edge> unmade;
+  for (std::size_t k = 0; k < a.missing.size(); ++k)
+    if (!last[k]) unmade.push_back(a.missing[k].seeds);
+  a.links_flipped = cut.size() - unmade.size();
+  a.tips_closed = close_corner_tips(a.finished, constraints.corner_seed, unmade);
+  const TopologyReport t = analyze_topology(a.finished);
+  a.topology_kept = t.is_manifold() && same_topology(t, m.surface_topology);
+  std::vector<bool> used(seeds.size(), false);
+  for (const Triangle& tri : a.finished.triangles)
+    for (const Index v : tri) used[v] = true;
+  const auto corners = static_cast<std::size_t>(std::count_if(constraints.corner_seed.begin(),
+                                                              constraints.corner_seed.end(),
+                                                              [&](Index s) { return used[s]; }));
+  a.score = {a.topology_kept,
+             -static_cast<std::ptrdiff_t>(t.nonmanifold_edges + t.nonmanifold_vertices), corners,
+             -static_cast<std::ptrdiff_t>(unmade.size())};
+  return a;
+}
+
 }  // namespace
 
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
@@ -65,55 +110,50 @@ std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
 
 PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::vector<Vec3>& seeds,
                              SeedConstraints& constraints, int rounds, MendReport& report) {
+  // Each round's output is kept if it is the best yet: where parts are thinner than the
+  // spacing, the seeds a round adds can make more defects than they mend (man.off at 3k
+  // vertices: 105 non-manifold edges after the first extraction, 201 after three rounds).
+  struct Round {
+    PolishedOutput output;
+    std::vector<Vec3> seeds;
+    SeedConstraints constraints;
+    Assessment assessment;
+    MendReport report;  // as of this round
+  };
+  std::optional<Round> best;
   for (int round = 0;; ++round) {
-    std::vector<FeatureLink> cut;
-    if (!constraints.empty())
-      cut = missing_links(feature_links(seeds, constraints, m.features, m.curves), output.mesh);
-    // The output with the well-shaped flips made, and the links they leave.
-    TriangleMesh flipped;
-    std::vector<bool> made;
-    if (!cut.empty()) {
-      flipped = output.mesh;
-      made = flip_in_links(flipped, link_seeds(cut), kWellShapedFlipDeg);
-    }
-    std::vector<FeatureLink> missing;
-    for (std::size_t k = 0; k < cut.size(); ++k)
-      if (!made[k]) missing.push_back(cut[k]);
+    Assessment a = assess(m, output.mesh, seeds, constraints);
+    if (!best || !(a.score < best->assessment.score))
+      best = Round{output, seeds, constraints, a, report};
     std::size_t changed = 0;
     if (round < rounds) {
-      if (!missing.empty()) {
+      if (!a.missing.empty()) {
         const std::size_t mended =
-            mend_missing_links(seeds, constraints, missing, m.curves, m.spacing);
+            mend_missing_links(seeds, constraints, a.missing, m.curves, m.spacing);
         report.links_mended += mended;
         changed += mended;
       }
       // The cells' pieces cost one more RVD: only when the output shows a defect.
-      const TopologyReport t = analyze_topology(output.mesh);
-      if (!t.is_manifold() || !same_topology(t, m.surface_topology)) {
+      if (!a.topology_kept) {
         const std::size_t added =
             seed_islands(m, cell_islands(m.surface, seeds), seeds, constraints);
         report.islands += added;
         changed += added;
       }
     }
-    if (changed == 0) {
-      if (!cut.empty()) {
-        const std::vector<bool> last =
-            flip_in_links(flipped, link_seeds(missing), kSmallestFlipDeg);
-        report.links_flipped = static_cast<std::size_t>(std::count(made.begin(), made.end(), true) +
-                                                        std::count(last.begin(), last.end(), true));
-        std::vector<Edge> unmade;
-        for (std::size_t k = 0; k < missing.size(); ++k)
-          if (!last[k]) unmade.push_back(missing[k].seeds);
-        report.tips_closed = close_corner_tips(flipped, constraints.corner_seed, unmade);
-        output.mesh = std::move(flipped);
-      }
-      return output;
-    }
+    if (changed == 0) break;
     ++report.rounds;
     output = extract_polished(m.surface, seeds, m.placement, m.polish);
     report.polish_rounds += output.rounds;
   }
+  output = std::move(best->output);
+  output.mesh = std::move(best->assessment.finished);
+  seeds = std::move(best->seeds);
+  constraints = std::move(best->constraints);
+  report = best->report;
+  report.links_flipped = best->assessment.links_flipped;
+  report.tips_closed = best->assessment.tips_closed;
+  return output;
 }
 
 }  // namespace cvtmesh

@@ -37,10 +37,12 @@ struct MendReport {
 // differs from the surface's (non-manifold, or other components, Euler characteristic or
 // boundary loops): mends the links no single well-shaped edge flip makes (mend_missing_links),
 // puts a new surface seed in each extra piece of a cell (cell_islands), and extracts again
-// (polishing around the new seeds). Then the links still missing are flipped in where one edge
-// flip makes them (flip_in_links): with no angle under 30°, or, for links the rounds could not
-// mend, 15°, and corners left without a triangle at a boundary tip get theirs
-// (close_corner_tips). Returns the last extraction. Seeds and constraints grow by the seeds added.
+// (polishing around the new seeds). Each extraction is finished as it would be returned: the
+// missing links flipped in where one edge flip makes them (flip_in_links; with no angle under
+// 30°, or, for links the seeds do not mend, 15°), and corners left without a triangle at a
+// boundary tip given theirs (close_corner_tips). Returns the best of these outputs, by the
+// input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
+// links missing (the latest of equals); seeds, constraints and report are as of that round.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,

@@ -39,7 +39,6 @@ constexpr int kSnapRounds = 3;
 constexpr int kCurveLloydSteps = 30;
 
 // Rounds of topology control after extraction (each one an extraction); rarely more than one.
-constexpr int kMendRounds = 3;
 
 // The edge length of N seeds spread evenly over area A as equilateral triangles (about two
 // triangles per vertex): the inverse of requested_vertex_count's formula.
@@ -95,6 +94,8 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   if (settings.iterations < 0) throw InvalidArgument("the iteration cap must not be negative");
   if (settings.polish_rounds < 0)
     throw InvalidArgument("the number of polishing rounds must not be negative");
+  if (settings.topology_rounds < 0)
+    throw InvalidArgument("the number of topology control rounds must not be negative");
   if (!(settings.gradient_tolerance > 0))
     throw InvalidArgument("the gradient tolerance must be positive");
   if (!(surface_area(mesh) > 0)) throw InputError("the surface has no area");
@@ -178,7 +179,8 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
       mesh,    result.input_topology,   result.features, *curves, *projector, placement,
       spacing, {settings.polish_rounds}};
   MendReport mends;
-  output = mend_topology(context, std::move(output), seeds, constraints, kMendRounds, mends);
+  output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
+                         mends);
   result.polish_rounds += mends.polish_rounds;
   result.links_mended = mends.links_mended;
   result.islands_seeded = mends.islands;
