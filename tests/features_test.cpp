@@ -285,7 +285,12 @@ TEST(RemeshFeaturesSharedData, SharkKeepsItsBoundaryLoops) {
   const TriangleMesh in = shared_mesh("mech-holes-shark.off");
   // One corner is a 27° tip of a single input triangle, whose cell meets its neighbours'
   // only off the surface: it is kept by the triangle added there.
-  expect_boundary_loops_and_corners_kept(in, remesh_to(in, 3000));
+  const RemeshResult r = remesh_to(in, 3000);
+  expect_boundary_loops_and_corners_kept(in, r);
+  // A boundary there is a saw of teeth a third of the edge length deep, each one triangle:
+  // its long sides were missed, until new seeds split them where both halves are then traced.
+  const std::size_t links = r.feature_edges.size() + r.feature_edges_missing;
+  EXPECT_LE(r.feature_edges_missing, links / 50) << "of " << links << " links";
 }
 
 // Thin wedges next to its creases: without topology control, cells there come in two pieces

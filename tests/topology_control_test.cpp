@@ -92,11 +92,11 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   EXPECT_NEAR(norm(seeds[stray] - middle), 0.0, 1e-12);
 
   // Where no surface seed cuts a missing link, a new curve seed comes in at its middle if the
-  // link is at least 1.25 spacings long (this one is 2), and nothing happens if it is shorter.
+  // link is at least a spacing long (this one is 2), and nothing happens if it is shorter.
   const std::vector<Vec3> kept = seeds;
-  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.0), 0u);
+  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.5), 0u);
   EXPECT_EQ(seeds, kept);
-  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 1.5), 1u);
+  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.0), 1u);
   ASSERT_EQ(seeds.size(), 10u);
   ASSERT_EQ(c.kind.size(), 10u);
   EXPECT_EQ(c.kind[9], SeedConstraints::Kind::curve);
@@ -104,6 +104,16 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   const Vec3 middle_of_second = curves.at(links[1].curve, (links[1].from + links[1].to) / 2);
   EXPECT_NEAR(norm(seeds[9] - middle_of_second), 0.0, 1e-12);
   EXPECT_NEAR(norm(seeds[9] - seeds[links[1].seeds[0]]), 1.0, 1e-12);  // halfway along an edge
+
+  // Nor does one come in where a half would still be cut: here a feature seed of another curve
+  // sits next to the middle of the third link's first half, nearer to it than either end.
+  const FeatureLink& third = links[2];
+  const Vec3 quarter = curves.at(third.curve, third.from + (third.to - third.from) / 4);
+  seeds.push_back(quarter - (0.1 / norm(quarter)) * quarter);  // towards the centre
+  c.append(SeedConstraints::Kind::curve, third.curve == 0 ? 1 : 0);
+  const std::vector<Vec3> cut = seeds;
+  EXPECT_EQ(mend_missing_links(seeds, c, {third}, curves, 1.0), 0u);
+  EXPECT_EQ(seeds, cut);
 }
 
 // Two triangles (0, 1, 3) and (3, 1, 2) of the unit square share the diagonal (1, 3).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <string>
@@ -16,7 +17,7 @@ namespace {
 constexpr Index kNoSeed = std::numeric_limits<Index>::max();
 
 // The shortest missing link, in spacings, that a new seed splits (see mend_missing_links).
-constexpr double kShortestSplitLink = 1.25;
+constexpr double kShortestSplitLink = 1.0;
 
 // How many seeds go inside curve c (its corners not counted).
 std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
@@ -26,6 +27,35 @@ std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::s
   const auto& v = f.curves[c].vertices;
   if (v.front() == v.back()) return std::max<std::size_t>(n, 3) - 1;  // a loop through a corner
   return n > 0 ? n - 1 : 0;
+}
+
+// Whether a seed at the middle of `link`'s stretch would make both halves edges of the
+// restricted Delaunay triangulation: each half's middle is nearer to its two ends than to any
+// other seed, so the bisector of the ends meets the curve inside both their cells (the curve's
+// own Gabriel condition).
+bool halves_witnessed(const std::vector<Vec3>& seeds, const PointTree& tree,
+                      const std::vector<Vec3>& added, const FeatureLink& link,
+                      const CurveProjector& curves) {
+  const double middle = (link.from + link.to) / 2;
+  const Vec3 split = curves.at(link.curve, middle);
+  std::vector<Index> nearer;
+  auto witnessed = [&](const Vec3& end, double from, double to) {
+    const Vec3 q = curves.at(link.curve, (from + to) / 2);
+    const double r2 = std::min(dot(q - end, q - end), dot(q - split, q - split));
+    tree.within(q, r2 * (1 - 1e-9), nearer);
+    return std::all_of(nearer.begin(), nearer.end(),
+                       [&](Index s) { return s == link.seeds[0] || s == link.seeds[1]; }) &&
+           std::none_of(added.begin(), added.end(),
+                        [&](const Vec3& p) { return dot(q - p, q - p) < r2 * (1 - 1e-9); });
+  };
+  const Vec3& first = seeds[link.seeds[0]];
+  const Vec3& second = seeds[link.seeds[1]];
+  // Which seed sits at `from`: the one nearer to that end of the stretch.
+  const Vec3 at_from = curves.at(link.curve, link.from);
+  const bool first_at_from =
+      dot(first - at_from, first - at_from) <= dot(second - at_from, second - at_from);
+  return witnessed(first_at_from ? first : second, link.from, middle) &&
+         witnessed(first_at_from ? second : first, middle, link.to);
 }
 
 }  // namespace
@@ -172,6 +202,7 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
   const PointTree tree(before);
   std::set<Vec3> occupied(seeds.begin(), seeds.end());
   std::vector<bool> moved(seeds.size(), false);
+  std::vector<Vec3> added;  // the new seeds, not in the tree
   std::size_t mended = 0;
   for (const FeatureLink& link : missing) {
     // The stretch's stray owners, by samples `spacing`/8 apart: surface seeds nearest to one of
@@ -189,15 +220,19 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
       if (d2 < stray_d2) stray_d2 = d2, stray = owner;
     }
     // No surface seed to take: feature seeds of other curves cut the stretch, as in a narrow
-    // wedge between two curves. A new seed splits the link in two, unless the halves would be
-    // well under the spacing: such features are below the output's resolution (a zigzag of
-    // corners, say), and seeds crowded there squeeze corner cells out of the output.
+    // wedge between two curves or a saw of corners finer than the spacing. A new seed splits
+    // the link in two where both halves would then be traced for sure, and are at least half
+    // the spacing long; elsewhere the seeds it would crowd there could squeeze corner cells
+    // out of the output (and topology control keeps its best round should one still do).
     const bool add = stray == kNoSeed;
-    if (add && link.to - link.from < kShortestSplitLink * spacing) continue;
+    if (add && (link.to - link.from < kShortestSplitLink * spacing ||
+                !halves_witnessed(before, tree, added, link, curves)))
+      continue;
     if (!occupied.insert(middle).second) continue;  // seeds stay distinct
     if (add) {
       stray = static_cast<Index>(seeds.size());
       seeds.push_back(middle);
+      added.push_back(middle);
       moved.push_back(false);
       c.append(SeedConstraints::Kind::curve);
     }
