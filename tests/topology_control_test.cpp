@@ -92,7 +92,7 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   EXPECT_NEAR(norm(seeds[stray] - middle), 0.0, 1e-12);
 
   // Where no surface seed cuts a missing link, a new curve seed comes in at its middle if the
-  // link is at least a spacing long (this one is 2), and nothing happens if it is shorter.
+  // link is at least 0.9 spacings long (this one is 2), and nothing happens if it is shorter.
   const std::vector<Vec3> kept = seeds;
   EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.5), 0u);
   EXPECT_EQ(seeds, kept);

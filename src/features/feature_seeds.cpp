@@ -17,7 +17,7 @@ namespace {
 constexpr Index kNoSeed = std::numeric_limits<Index>::max();
 
 // The shortest missing link, in spacings, that a new seed splits (see mend_missing_links).
-constexpr double kShortestSplitLink = 1.0;
+constexpr double kShortestSplitLink = 0.9;
 
 // How many seeds go inside curve c (its corners not counted).
 std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
@@ -221,8 +221,8 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
     }
     // No surface seed to take: feature seeds of other curves cut the stretch, as in a narrow
     // wedge between two curves or a saw of corners finer than the spacing. A new seed splits
-    // the link in two where both halves would then be traced for sure, and are at least half
-    // the spacing long; elsewhere the seeds it would crowd there could squeeze corner cells
+    // the link in two where both halves would then be traced for sure, and are at least 0.45
+    // spacings long; elsewhere the seeds it would crowd there could squeeze corner cells
     // out of the output (and topology control keeps its best round should one still do).
     const bool add = stray == kNoSeed;
     if (add && (link.to - link.from < kShortestSplitLink * spacing ||

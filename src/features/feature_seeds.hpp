@@ -60,7 +60,7 @@ std::vector<FeatureLink> feature_links(const std::vector<Vec3>& seeds, const See
 // there. For each such link whose stretch a surface seed owns in part, that seed (the one
 // nearest to the stretch's middle, if several) joins the curve at the middle. A link cut only by
 // feature seeds of other curves (in a narrow wedge between two curves, or a saw of corners)
-// gets a new curve seed at its middle instead, if it is at least `spacing` long and each half's
+// gets a new curve seed at its middle instead, if it is at least 0.9 `spacing` long and each half's
 // middle is then nearer to the half's ends than to any other seed (so the restricted Delaunay
 // triangulation has both halves); other links stay as they are. Returns how many seeds joined
 // or came in.
