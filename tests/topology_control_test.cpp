@@ -238,7 +238,8 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
   const CvtObjective placement(box, &projector, &c, &curves);
   const TopologyReport topology = analyze_topology(box);
   const PolishSettings polish{0, 0};
-  const MendContext context{box, topology, features, curves, projector, placement, 0.25, polish};
+  // The scene is set up unpolished; topology control polishes as remesh does.
+  const MendContext context{box, topology, features, curves, projector, placement, 0.25, {}};
   // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's
   // length off the crease: it cuts the link, and flipping the link in would leave 26.6°. The
   // links are tried from the middle of the list on, until one where that flip can be made.

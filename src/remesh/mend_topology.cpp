@@ -62,9 +62,9 @@ struct Assessment {
   bool topology_kept = true;
   std::size_t links_flipped = 0, tips_closed = 0;
   // Better outputs compare greater: the input's topology, then fewer non-manifold edges and
-  // vertices, then more corners, then fewer links missing, then fewer made by flips under the
-  // quality bar, then the better worst triangle (Qmin).
-  std::tuple<bool, std::ptrdiff_t, std::size_t, std::ptrdiff_t, std::ptrdiff_t, double> score;
+  // vertices, then more corners, then fewer links missing, then the better worst triangle
+  // (Qmin: a seed that mends a link is worth it only if it leaves better triangles than a flip).
+  std::tuple<bool, std::ptrdiff_t, std::size_t, std::ptrdiff_t, double> score;
 };
 
 Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vector<Vec3>& seeds,
@@ -93,11 +93,8 @@ Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vect
                                                               constraints.corner_seed.end(),
                                                               [&](Index s) { return used[s]; }));
   a.score = {a.topology_kept,
-             -static_cast<std::ptrdiff_t>(t.nonmanifold_edges + t.nonmanifold_vertices),
-             corners,
-             -static_cast<std::ptrdiff_t>(unmade.size()),
-             -static_cast<std::ptrdiff_t>(std::count(last.begin(), last.end(), true)),
-             measure_quality(a.finished).q_min};
+             -static_cast<std::ptrdiff_t>(t.nonmanifold_edges + t.nonmanifold_vertices), corners,
+             -static_cast<std::ptrdiff_t>(unmade.size()), measure_quality(a.finished).q_min};
   return a;
 }
 
