@@ -71,7 +71,7 @@ struct RemeshResult {
   // cut it; and seeds added in the extra pieces of restricted cells split in several (where the
   // output was not homeomorphic to the input). Counted up to the round whose output is kept:
   // the best of all, by topology first (the input's, then fewest non-manifold edges and
-  // vertices), then corners kept, then links missing.
+  // vertices), then corners kept, then links missing, then Qmin.
   std::size_t links_mended = 0;
   std::size_t islands_seeded = 0;
   std::size_t links_flipped = 0;  // links still missing after that, made by one edge flip

@@ -42,7 +42,8 @@ struct MendReport {
 // 30°, or, for links the seeds do not mend, 15°), and corners left without a triangle at a
 // boundary tip given theirs (close_corner_tips). Returns the best of these outputs, by the
 // input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
-// links missing (the latest of equals); seeds, constraints and report are as of that round.
+// links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
+// that round.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,
