@@ -38,8 +38,6 @@ constexpr int kSnapRounds = 3;
 // differs (fully even spacing lost joint.off and triple_vierbein.obj 5-8° at 2k vertices).
 constexpr int kCurveLloydSteps = 30;
 
-// Rounds of topology control after extraction (each one an extraction); rarely more than one.
-
 // The edge length of N seeds spread evenly over area A as equilateral triangles (about two
 // triangles per vertex): the inverse of requested_vertex_count's formula.
 double edge_length_for(double area, std::size_t n) {
