@@ -33,15 +33,6 @@ struct RemeshOptions {
   bool quiet = false, json = false, no_features = false, no_hausdorff = false;
 };
 
-// Input corners found among the output's vertices at exactly their input position.
-std::size_t corners_kept(const TriangleMesh& input, const Features& f, const TriangleMesh& out) {
-  std::vector<Vec3> at(out.vertices);
-  std::sort(at.begin(), at.end());
-  return static_cast<std::size_t>(std::count_if(f.corners.begin(), f.corners.end(), [&](Index c) {
-    return std::binary_search(at.begin(), at.end(), input.vertices[c]);
-  }));
-}
-
 int run_remesh(RemeshOptions o) {
   const auto threads = limit_threads(o.threads);
   ensure_distinct_output(o.input, o.output);

@@ -51,4 +51,8 @@ struct FeatureDistance {
 FeatureDistance feature_distance(const TriangleMesh& input, const std::vector<Edge>& input_edges,
                                  const TriangleMesh& output, const std::vector<Edge>& output_edges);
 
+// The input's corners found among the output's vertices at exactly their input position.
+std::size_t corners_kept(const TriangleMesh& input, const Features& features,
+                         const TriangleMesh& output);
+
 }  // namespace cvtmesh

@@ -1,5 +1,6 @@
 // One-sided distance from the input's feature curves to the output's feature edges (issue
-// report key feature_hausdorff_*), by an AABB tree over the output segments.
+// report key feature_hausdorff_*), by an AABB tree over the output segments; and the corners
+// the output keeps (corners_out).
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -7,6 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -62,6 +64,15 @@ FeatureDistance feature_distance(const TriangleMesh& input, const std::vector<Ed
   for (double x : d) result.max = std::max(result.max, x), result.mean += x;
   result.mean /= static_cast<double>(d.size());
   return result;
+}
+
+std::size_t corners_kept(const TriangleMesh& input, const Features& features,
+                         const TriangleMesh& output) {
+  std::vector<Vec3> at(output.vertices);
+  std::sort(at.begin(), at.end());
+  return static_cast<std::size_t>(std::count_if(
+      features.corners.begin(), features.corners.end(),
+      [&](Index c) { return std::binary_search(at.begin(), at.end(), input.vertices[c]); }));
 }
 
 }  // namespace cvtmesh
