@@ -125,8 +125,10 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   std::optional<Round> best;
   for (int round = 0;; ++round) {
     Assessment a = assess(m, output.mesh, seeds, constraints);
+    // `output` is not read again before the next extraction replaces it, and the kept mesh is
+    // the assessment's finished one: moved, not copied.
     if (!best || !(a.score < best->assessment.score))
-      best = Round{output, seeds, constraints, a, report};
+      best = Round{std::move(output), seeds, constraints, a, report};
     std::size_t changed = 0;
     if (round < rounds) {
       if (!a.missing.empty()) {
