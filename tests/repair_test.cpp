@@ -20,6 +20,54 @@ TEST(Repair, CleanMeshIsUnchanged) {
   EXPECT_EQ(m.triangles, before.triangles);
 }
 
+TEST(Repair, KeepsApartDuplicatesWhoseMergeWouldMakeTheMeshNonManifold) {
+  // Two closed spheres touching at one point, each with its own vertex there: merging the two
+  // would make a non-manifold vertex, so they stay apart (diplodocus.off's touching parts).
+  const TriangleMesh a = icosphere(1);
+  TriangleMesh b = transformed(icosphere(1), 1.0,
+                               {2 * a.vertices[0].x, 2 * a.vertices[0].y, 2 * a.vertices[0].z});
+  // b's vertex opposite to a.vertices[0] is -a.vertices[0] shifted: exactly a.vertices[0].
+  TriangleMesh both = concatenate(a, b);
+  const TopologyReport before = analyze_topology(both);
+  const RepairReport r = repair_mesh(both);
+  EXPECT_EQ(r.duplicate_vertices_merged, 0u);
+  EXPECT_EQ(r.duplicate_vertices_kept_apart, 1u);
+  EXPECT_NE(r.summary().find("kept apart"), std::string::npos);
+  const TopologyReport after = analyze_topology(both);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
+  EXPECT_EQ(after.components, 2u);
+}
+
+TEST(Repair, StitchesASeamButNotAWeldAlongAnEdge) {
+  // A cube cut open along one edge (its vertices duplicated on one side) stitches back; a second
+  // cube glued face to face along an edge (sharing two duplicated vertices) would put four
+  // triangles on that edge, and stays apart.
+  TriangleMesh seam = cube(1);
+  std::size_t seam_dups = 0;
+  for (Triangle& t : seam.triangles) {
+    const Vec3 c = (1.0 / 3) * (seam.vertices[t[0]] + seam.vertices[t[1]] + seam.vertices[t[2]]);
+    if (c.x < 0.99) continue;  // the +x face gets its own copies of its corners
+    for (Index& v : t) {
+      seam.vertices.push_back(seam.vertices[v]);
+      v = static_cast<Index>(seam.vertices.size() - 1);
+      ++seam_dups;
+    }
+  }
+  const RepairReport stitched = repair_mesh(seam);
+  EXPECT_EQ(stitched.duplicate_vertices_kept_apart, 0u);
+  EXPECT_EQ(stitched.duplicate_vertices_merged, seam_dups);
+  EXPECT_TRUE(analyze_topology(seam).is_manifold());
+  EXPECT_EQ(analyze_topology(seam).euler_characteristic, 2);
+
+  const TriangleMesh one = cube(1);
+  TriangleMesh weld = concatenate(one, transformed(one, 1.0, {2, 2, 0}));  // share the edge x=y=1
+  const RepairReport kept = repair_mesh(weld);
+  EXPECT_EQ(kept.duplicate_vertices_merged, 0u);
+  EXPECT_EQ(kept.duplicate_vertices_kept_apart, 2u);
+  EXPECT_TRUE(analyze_topology(weld).is_manifold());
+}
+
 TEST(Repair, MergesExactlyDuplicateVerticesAndStitchesTheSurface) {
   // A triangle soup: each triangle with its own three corners, as STL-like writers produce.
   const TriangleMesh indexed = icosphere(2);

@@ -1,6 +1,7 @@
 // Topology control of the output (paper §4.4): cells in several pieces are found, feature
 // curves cut by a third cell get a seed of their own there, and the best round is kept.
 #include <gtest/gtest.h>
+#include <cstdio>
 
 #include <algorithm>
 #include <filesystem>
@@ -279,48 +280,117 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
 
 TEST(TopologyControl, AThinPlateComesOutHomeomorphic) {
   // A plate as thin as a quarter of the edge length: cells of seeds near its rim reach around
-  // onto the other face. Without topology control this output is non-manifold; the control
-  // adds a few seeds and it comes out with the plate's topology.
+  // onto the other face. The ordinary restricted Delaunay triangulation is then non-manifold;
+  // the multi-nerve one (a vertex per piece of a cell) has the plate's topology even without
+  // rounds of topology control, and with them too.
   TriangleMesh plate = cube(8);
   for (Vec3& v : plate.vertices) v.z *= 0.05;
   RemeshSettings s;
   s.vertices = 400;
   s.features.sharp_edges = false;
+  s.topology_rounds = 0;
+  const RemeshResult without = remesh(plate, s);
+  const TopologyReport t0 = analyze_topology(without.mesh);
+  EXPECT_TRUE(t0.is_manifold());
+  EXPECT_TRUE(same_topology(t0, analyze_topology(plate)));
+  EXPECT_GT(without.mesh.vertices.size(), 400u);  // the far pieces' vertices
+  EXPECT_EQ(without.mend_rounds, 0);
+
+  s.topology_rounds = 3;
   const RemeshResult r = remesh(plate, s);
   const TopologyReport t = analyze_topology(r.mesh);
   EXPECT_TRUE(t.is_manifold());
   EXPECT_TRUE(same_topology(t, analyze_topology(plate)));
-  EXPECT_GT(r.islands_seeded, 0u);
-  EXPECT_GE(r.mend_rounds, 1);
-  EXPECT_LE(r.mesh.vertices.size(), 420u);
-
-  s.topology_rounds = 0;
-  const RemeshResult without = remesh(plate, s);
-  EXPECT_FALSE(analyze_topology(without.mesh).is_manifold());
-  EXPECT_EQ(without.islands_seeded, 0u);
-  EXPECT_EQ(without.mend_rounds, 0);
+  EXPECT_LE(r.mesh.vertices.size(), 440u);
   s.topology_rounds = -1;
   EXPECT_THROW(remesh(plate, s), InvalidArgument);
 }
 
-TEST(TopologyControlSharedData, NoRoundMakesTheOutputWorseThanTheFirst) {
-  // man.off's limbs are thinner than the edge length at 3k vertices: seeds added in pieces of
-  // cells there make new defects as they mend others, and the output after three rounds had
-  // more non-manifold edges than the first triangulation. The best round is kept instead.
+TEST(TopologyControlSharedData, SelfIntersectingThinLimbsComeOutManifold) {
+  // man.off crosses itself (848 pairs of intersecting triangles) and its limbs are thinner than
+  // the edge length at 3k vertices: the ordinary restricted Delaunay triangulation had 105
+  // non-manifold edges. With or without rounds of topology control the output is an oriented
+  // manifold, and the rounds never leave the last step more to remove.
   if (!std::filesystem::exists(shared_data()))
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();
   const TriangleMesh man = shared_mesh("man.off");
   RemeshSettings s;
   s.vertices = 3000;
-  auto defects = [](const TriangleMesh& m) {
-    const TopologyReport t = analyze_topology(m);
-    return t.nonmanifold_edges + t.nonmanifold_vertices;
-  };
   const RemeshResult controlled = remesh(man, s);
   s.topology_rounds = 0;
   const RemeshResult first = remesh(man, s);
-  ASSERT_GT(defects(first.mesh), 0u) << "the case this test is about does not arise";
-  EXPECT_LE(defects(controlled.mesh), defects(first.mesh));
+  for (const RemeshResult* r : {&controlled, &first}) {
+    const TopologyReport t = analyze_topology(r->mesh);
+    EXPECT_TRUE(t.is_manifold());
+    EXPECT_TRUE(t.consistently_oriented);
+  }
+  EXPECT_LE(controlled.triangles_removed, first.triangles_removed);
+  std::printf("man.off at 3k: %zu triangles removed without rounds, %zu with\n",
+              first.triangles_removed, controlled.triangles_removed);
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+// The manifold guarantee and the input's topology (issue 18), with the defaults.
+void expect_valid_remesh(const TriangleMesh& input, std::size_t vertices) {
+  RemeshSettings s;
+  s.vertices = vertices;
+  const RemeshResult r = remesh(input, s);
+  const TopologyReport t = analyze_topology(r.mesh), in = analyze_topology(input);
+  EXPECT_TRUE(t.is_manifold()) << t.nonmanifold_edges << " non-manifold edges, "
+                               << t.nonmanifold_vertices << " vertices";
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_TRUE(same_topology(t, in))
+      << "components " << t.components << " vs " << in.components << ", χ "
+      << t.euler_characteristic << " vs " << in.euler_characteristic << ", loops "
+      << t.boundary_loops << " vs " << in.boundary_loops << "; " << r.triangles_removed
+      << " triangles removed";
+  EXPECT_EQ(r.triangles_removed, 0u);
+}
+
+TEST(HardCases, TwoParallelSheetsCloserThanTheEdgeLength) {
+  // Two disks 0.02 apart, edge length about 0.1: cells reach across the gap.
+  expect_valid_remesh(concatenate(disk(12, 48), transformed(disk(12, 48), 1.0, {0, 0, 0.02})),
+                      1000);
+}
+
+TEST(HardCases, TwoSpheresNearlyTouching) {
+  expect_valid_remesh(concatenate(icosphere(3), transformed(icosphere(3), 1.0, {2.01, 0, 0})), 600);
+}
+
+TEST(HardCases, ATinyComponentBesideALargeOne) {
+  // Three triangles of a fan, far smaller than one output triangle, next to a sphere.
+  TriangleMesh fan;
+  fan.vertices = {{1.1, 0, 0}, {1.1, 0.01, 0}, {1.1, 0.005, 0.01}, {1.1, -0.005, 0.01}};
+  fan.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}};
+  expect_valid_remesh(concatenate(icosphere(3), fan), 500);
+}
+
+// Known failure, disabled: the output is a manifold sphere (χ 2 against 0), because the cells
+// around the hole are annuli in one piece, and no check sees a cell that is not a disc unless
+// the triangulation shows a defect. A per-cell Euler characteristic would find them.
+TEST(HardCases, DISABLED_ATorusWhoseHoleIsSmallerThanTheEdgeLength) {
+  // Major radius 1, tube radius 0.95: the hole is 0.1 across, the edge length about 0.25.
+  expect_valid_remesh(torus(1.0, 0.95, 96, 48), 600);
+}
+
+TEST(HardCases, ANeedle) {
+  // A cylinder of radius 0.01 and length 2, remeshed coarsely.
+  TriangleMesh needle = cylinder(40, 12);
+  for (Vec3& v : needle.vertices) v.x *= 0.01, v.y *= 0.01;
+  expect_valid_remesh(needle, 200);
+}
+
+TEST(HardCases, FewAndManyVertices) {
+  const TriangleMesh t = torus(1.0, 0.3, 64, 24);
+  expect_valid_remesh(t, 200);
+  expect_valid_remesh(t, 20000);
 }
 
 }  // namespace

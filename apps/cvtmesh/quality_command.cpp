@@ -24,7 +24,7 @@ struct QualityOptions {
 void note_possible_repairs(const std::string& file, const TriangleMesh& mesh) {
   RepairReport r = diagnose_repairs(mesh);
   r.unreferenced_vertices_removed = 0;  // reported with the counts already
-  if (r.changed())
+  if (r.noteworthy())
     fmt::print(stderr, "{}: note: `cvtmesh repair` would change: {}\n", file, r.summary());
 }
 

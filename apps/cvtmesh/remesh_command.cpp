@@ -40,7 +40,7 @@ int run_remesh(RemeshOptions o) {
     throw InvalidArgument(o.output +
                           ": unknown output extension (expected .obj, .off, .ply or .stl)");
   TriangleMesh input = read_mesh(o.input);
-  if (const RepairReport r = repair_mesh(input); r.changed())
+  if (const RepairReport r = repair_mesh(input); r.noteworthy())
     fmt::print(stderr, "{}: repaired: {}\n", o.input, r.summary());
   RemeshSettings& s = o.settings;
   s.features.sharp_edges = !o.no_features;
@@ -94,6 +94,9 @@ int run_remesh(RemeshOptions o) {
     j["feature_sector_min_deg"] = sector;
     j["links_mended"] = r.links_mended;
     j["islands_seeded"] = r.islands_seeded;
+    j["seeds_refined"] = r.seeds_refined;
+    j["triangles_removed"] = r.triangles_removed;
+    j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
     j["links_flipped"] = r.links_flipped;
     j["tips_closed"] = r.tips_closed;
     j["mend_rounds"] = r.mend_rounds;
@@ -135,10 +138,16 @@ int run_remesh(RemeshOptions o) {
         r.polish_rounds);
     if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
       fmt::print(
-          "  topology  {} rounds of control: {} seeds added in split cells, {} on cut curves; {} "
-          "feature edges flipped in, {} triangles added at boundary tips\n",
-          r.mend_rounds, r.islands_seeded, r.links_mended, r.links_flipped, r.tips_closed);
+          "  topology  {} rounds of control: {} seeds added in split cells, {} at defects, {} on "
+          "cut curves; {} feature edges flipped in, {} triangles added at boundary tips\n",
+          r.mend_rounds, r.islands_seeded, r.seeds_refined, r.links_mended, r.links_flipped,
+          r.tips_closed);
   }
+  if (r.triangles_removed > 0)
+    fmt::print(stderr,
+               "{}: warning: {} triangles removed where the triangulation was not a manifold and "
+               "topology control could not mend it (more vertices would resolve the thin parts)\n",
+               o.output, r.triangles_removed);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;
 }

@@ -23,7 +23,7 @@ int run_repair(const RepairOptions& o) {
   if (mesh.triangles.empty())
     throw InputError(o.input + ": no triangle with non-zero area is left after repair");
   fmt::print(stderr, "{}: {}\n", o.input,
-             repairs.changed() ? repairs.summary() : "nothing to repair");
+             repairs.noteworthy() ? repairs.summary() : "nothing to repair");
   const TopologyReport topology = analyze_topology(mesh);
   warn_about_topology(o.output, topology);
   write_mesh(o.output, mesh);

@@ -45,7 +45,7 @@ int run_rvd(const RvdOptions& o) {
   for (const std::string& out : {o.cells, o.rdt})
     if (!out.empty()) ensure_distinct_output(o.mesh, out);
   TriangleMesh mesh = read_mesh(o.mesh);
-  if (const RepairReport r = repair_mesh(mesh); r.changed())
+  if (const RepairReport r = repair_mesh(mesh); r.noteworthy())
     fmt::print(stderr, "{}: repaired: {}\n", o.mesh, r.summary());
   if (mesh.triangles.empty()) throw InputError(o.mesh + ": no triangle of non-zero area");
 

@@ -74,9 +74,17 @@ struct RemeshResult {
   // vertices), then corners kept, then links missing, then Qmin.
   std::size_t links_mended = 0;
   std::size_t islands_seeded = 0;
+  // Seeds added where the triangulation failed the topological ball property (a non-manifold
+  // edge or vertex, a boundary edge the input lacks, a fold): at the points where the defective
+  // triangles' dual Voronoi edges cross the surface (Delaunay refinement).
+  std::size_t seeds_refined = 0;
   std::size_t links_flipped = 0;  // links still missing after that, made by one edge flip
   std::size_t tips_closed = 0;    // triangles added at corners of boundary tips
   int mend_rounds = 0;
+  // The last step: triangles removed at the defects the rounds could not mend (non-manifold
+  // edges and vertices, folds), so that the output is always an oriented manifold. Each leaves
+  // a hole: when this is not 0 the output's topology differs from the input's.
+  std::size_t triangles_removed = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it
 };
 

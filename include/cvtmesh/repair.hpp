@@ -9,7 +9,9 @@
 namespace cvtmesh {
 
 struct RepairReport {
-  std::size_t duplicate_vertices_merged = 0;     // vertices with exactly equal coordinates
+  std::size_t duplicate_vertices_merged = 0;  // vertices with exactly equal coordinates
+  // Duplicates not merged, because the merge would have made a non-manifold edge or vertex.
+  std::size_t duplicate_vertices_kept_apart = 0;
   std::size_t degenerate_triangles_removed = 0;  // zero area (repeated or collinear corners)
   std::size_t duplicate_triangles_removed = 0;   // same three vertices, any order or orientation
   std::size_t unreferenced_vertices_removed = 0;
@@ -19,13 +21,16 @@ struct RepairReport {
                unreferenced_vertices_removed >
            0;
   }
+  // Whether summary() has anything to say: a change, or duplicates kept apart.
+  bool noteworthy() const { return changed() || duplicate_vertices_kept_apart > 0; }
   // "merged 3 duplicate vertices, removed 2 zero-area triangles", or "" if nothing changed.
   std::string summary() const;
 };
 
-// Applies, in this order: merge exactly-duplicate vertices, drop zero-area triangles (exact
-// collinearity test), drop duplicate triangles (first one kept), drop unreferenced vertices.
-// Deterministic; the kept elements keep their relative order.
+// Applies, in this order: merge exactly-duplicate vertices where that stitches the surface and
+// makes no edge or vertex non-manifold (the others are kept apart and counted), drop zero-area
+// triangles (exact collinearity test), drop duplicate triangles (first one kept), drop unreferenced
+// vertices. Deterministic; the kept elements keep their relative order.
 RepairReport repair_mesh(TriangleMesh& mesh);
 
 // Drops triangles with the same three vertices as an earlier one (any order or orientation),

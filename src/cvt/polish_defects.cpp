@@ -7,6 +7,7 @@
 
 #include "cvtmesh/quality.hpp"
 #include "geometry/point_tree.hpp"
+#include "voronoi/multi_nerve.hpp"
 
 namespace cvtmesh {
 
@@ -78,6 +79,15 @@ std::vector<Index> grown(const std::vector<Index>& set, const TriangleMesh& rdt)
       out.insert(out.end(), t.begin(), t.end());
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The triangles of `mesh` whose vertices are all below `n`, with all its vertices.
+TriangleMesh among_seeds(const TriangleMesh& mesh, std::size_t n) {
+  TriangleMesh out;
+  out.vertices = mesh.vertices;
+  for (const Triangle& t : mesh.triangles)
+    if (t[0] < n && t[1] < n && t[2] < n) out.triangles.push_back(t);
   return out;
 }
 
@@ -198,17 +208,21 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
   std::vector<Index> moving;
   for (int round = 0;; ++round) {
     const RestrictedVoronoiDiagram rvd(surface, seeds);
-    RestrictedDelaunayBuilder rdt(rvd);
+    MultiNerveBuilder rdt(rvd, surface);
     CellCoverage coverage;
     PolygonSink* sinks[] = {&rdt, &coverage};
     rvd.traverse(sinks);
     out.mesh = rdt.result();
+    out.vertex_seed = rdt.vertex_seed();
+    // Polishing moves seeds: it looks at the triangles between seeds only, not at those of the
+    // cells' far pieces (which topology control sees to).
+    const TriangleMesh rdt_of_seeds = among_seeds(out.mesh, seeds.size());
     std::size_t defects = 0;
-    const std::vector<Index> defective = defective_seeds(out.mesh, defects);
+    const std::vector<Index> defective = defective_seeds(rdt_of_seeds, defects);
     if (round == 0) out.defects = defects;
     // The defects' seeds and their neighbours move, except feature seeds: moving them along
     // their curves would undo the snapping (§4.3) that made the curves' chains of output edges.
-    std::vector<Index> movable = grown(defective, out.mesh);
+    std::vector<Index> movable = grown(defective, rdt_of_seeds);
     std::erase_if(movable,
                   [&](Index s) { return objective.kind(s) != SeedConstraints::Kind::surface; });
     // Done, also when the last round already moved all these seeds: Lloyd converged there to
@@ -220,11 +234,11 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     moving = std::move(movable);
     // One more ring of cells gives the moving cells room to shift within the patch, and one
     // more shapes the patch's cells.
-    const std::vector<Index> margin = grown(moving, out.mesh);
+    const std::vector<Index> margin = grown(moving, rdt_of_seeds);
     const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin));
     const std::vector<Vec3> fixed = seeds;
     const PointTree tree(fixed);
-    local_lloyd(patch, grown(margin, out.mesh), moving, seeds, objective, settings.steps, tree,
+    local_lloyd(patch, grown(margin, rdt_of_seeds), moving, seeds, objective, settings.steps, tree,
                 fixed);
   }
 }

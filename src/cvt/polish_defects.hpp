@@ -17,13 +17,16 @@ struct PolishSettings {
 };
 
 struct PolishedOutput {
-  TriangleMesh mesh;        // the restricted Delaunay triangulation of the final seeds
-  int rounds = 0;           // rounds that found defects and moved seeds
-  std::size_t defects = 0;  // defective triangles found in the first round
+  // The restricted Delaunay triangulation of the final seeds, one vertex per piece of each cell
+  // (MultiNerveBuilder): the seeds by id, then the cells' far pieces.
+  TriangleMesh mesh;
+  std::vector<Index> vertex_seed;  // per vertex of `mesh`, the seed whose cell it stands for
+  int rounds = 0;                  // rounds that found defects and moved seeds
+  std::size_t defects = 0;         // defective triangles found in the first round
 };
 
-// Triangulates the seeds (restricted Delaunay) and, while it has defective triangles, rounds
-// are left and the last round did not already move every seed around them, moves the surface
+// Triangulates the seeds (restricted Delaunay, multi-nerve) and, while it has defective triangles,
+// rounds are left and the last round did not already move every seed around them, moves the surface
 // seeds around them by local Lloyd steps and triangulates again. Moved seeds stay on the
 // surface (objective.constrained); feature seeds do not move. The result does not depend on
 // the thread count.

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "cvtmesh/repair.hpp"
+#include "geometry/union_find.hpp"
 
 namespace cvtmesh {
 
@@ -31,25 +32,102 @@ void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
     for (Index& v : t) v = new_index[v];
 }
 
-std::size_t merge_duplicate_vertices(TriangleMesh& mesh) {
+// The vertices where `tris` is not a manifold: ends of edges with three or more triangles, and
+// vertices whose triangles form several fans (joined across edges of exactly two triangles).
+// Triangles with a repeated corner are left out (repair drops them).
+std::vector<bool> nonmanifold_vertices(std::size_t n, const std::vector<Triangle>& tris) {
+  struct Use {
+    Index a, b;
+    std::size_t triangle;
+  };
+  std::vector<Use> uses;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Triangle& f = tris[t];
+    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
+    for (int k = 0; k < 3; ++k)
+      uses.push_back({std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]), t});
+  }
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
+    return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);
+  });
+  std::vector<bool> bad(n, false);
+  UnionFind fans(3 * tris.size());  // corners (triangle, k) around a vertex joined into fans
+  auto corner = [&](std::size_t t, Index v) {
+    return 3 * t + static_cast<std::size_t>(tris[t][0] == v ? 0 : tris[t][1] == v ? 1 : 2);
+  };
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b) ++j;
+    if (j - i >= 3) bad[uses[i].a] = bad[uses[i].b] = true;
+    if (j - i == 2)
+      for (const Index v : {uses[i].a, uses[i].b})
+        fans.unite(corner(uses[i].triangle, v), corner(uses[i + 1].triangle, v));
+    i = j;
+  }
+  std::vector<std::size_t> fan_of(n, static_cast<std::size_t>(-1));
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const Triangle& f = tris[t];
+    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t root = fans.find(3 * t + k);
+      if (fan_of[f[k]] == static_cast<std::size_t>(-1))
+        fan_of[f[k]] = root;
+      else if (fan_of[f[k]] != root)
+        bad[f[k]] = true;
+    }
+  }
+  return bad;
+}
+
+// Merges vertices with exactly equal coordinates where that stitches the mesh, as CGAL's
+// stitch_borders does: a group of equal vertices whose merge would leave a non-manifold edge or
+// vertex there stays apart (two parts that touch at a point or along an edge are not welded;
+// issue 18, diplodocus.off). Groups are merged all at once, then those at a defect that the merge
+// made are split again, until none is. Returns the vertices merged; `kept_apart` counts the
+// vertices of the groups left apart, less one each.
+std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart) {
   const auto& p = mesh.vertices;
   std::vector<Index> order(p.size());
   std::iota(order.begin(), order.end(), Index{0});
   std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return p[a] < p[b]; });
   // Each run of equal points maps to its first vertex in file order (stable sort keeps it first).
   std::vector<Index> representative(p.size());
-  std::vector<bool> keep(p.size(), true);
-  std::size_t merged = 0;
+  std::vector<std::size_t> group_size(p.size(), 0);
   for (std::size_t i = 0; i < order.size(); ++i) {
     const bool same_as_previous = i > 0 && p[order[i]] == p[order[i - 1]];
     representative[order[i]] = same_as_previous ? representative[order[i - 1]] : order[i];
-    if (same_as_previous) keep[order[i]] = false, ++merged;
+    ++group_size[representative[order[i]]];
   }
-  if (merged == 0) return 0;
+  std::vector<bool> merging(p.size(), false);  // per representative
+  bool any = false;
+  for (std::size_t v = 0; v < p.size(); ++v)
+    if (group_size[v] > 1) merging[v] = any = true;
+  kept_apart = 0;
+  if (!any) return 0;
+  auto target = [&](Index v) { return merging[representative[v]] ? representative[v] : v; };
+  for (;;) {
+    std::vector<Triangle> merged = mesh.triangles;
+    for (Triangle& t : merged)
+      for (Index& v : t) v = target(v);
+    const std::vector<bool> bad = nonmanifold_vertices(p.size(), merged);
+    bool split = false;
+    for (std::size_t v = 0; v < p.size(); ++v)
+      if (bad[v] && merging[v] && representative[v] == v) {
+        merging[v] = false;
+        kept_apart += group_size[v] - 1;
+        split = true;
+      }
+    if (!split) break;
+  }
+  std::vector<bool> keep(p.size(), true);
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < p.size(); ++v)
+    if (target(static_cast<Index>(v)) != v) keep[v] = false, ++count;
+  if (count == 0) return 0;
   for (Triangle& t : mesh.triangles)
-    for (Index& v : t) v = representative[v];
+    for (Index& v : t) v = target(v);
   compact_vertices(mesh, keep);
-  return merged;
+  return count;
 }
 
 std::size_t remove_degenerate_triangles(TriangleMesh& mesh) {
@@ -107,6 +185,8 @@ std::string RepairReport::summary() const {
     s += std::to_string(n) + " " + what;
   };
   add(duplicate_vertices_merged, "duplicate vertices merged");
+  add(duplicate_vertices_kept_apart,
+      "duplicate vertices kept apart (merging them would make the mesh non-manifold)");
   add(degenerate_triangles_removed, "zero-area triangles removed");
   add(duplicate_triangles_removed, "duplicate triangles removed");
   add(unreferenced_vertices_removed, "unreferenced vertices removed");
@@ -115,7 +195,7 @@ std::string RepairReport::summary() const {
 
 RepairReport repair_mesh(TriangleMesh& mesh) {
   RepairReport r;
-  r.duplicate_vertices_merged = merge_duplicate_vertices(mesh);
+  r.duplicate_vertices_merged = merge_duplicate_vertices(mesh, r.duplicate_vertices_kept_apart);
   r.degenerate_triangles_removed = remove_degenerate_triangles(mesh);
   r.duplicate_triangles_removed = remove_duplicate_triangles(mesh);
   r.unreferenced_vertices_removed = remove_unreferenced_vertices(mesh);

@@ -8,6 +8,7 @@
 #include "cvt/cell_islands.hpp"
 #include "cvtmesh/quality.hpp"
 #include "remesh/flip_links.hpp"
+#include "remesh/output_defects.hpp"
 
 namespace cvtmesh {
 
@@ -38,20 +39,70 @@ std::vector<Edge> link_seeds(const std::vector<FeatureLink>& links) {
   return seeds;
 }
 
-// A new surface seed at the nearest surface point of each island's centroid, unless a seed is
-// there already. Returns how many came in.
-std::size_t seed_islands(const MendContext& m, const std::vector<CellIsland>& islands,
-                         std::vector<Vec3>& seeds, SeedConstraints& constraints) {
+// New surface seeds at the nearest surface points of `points`, unless a seed is there already.
+// Returns how many came in.
+std::size_t add_surface_seeds(const MendContext& m, const std::vector<Vec3>& points,
+                              std::vector<Vec3>& seeds, SeedConstraints& constraints) {
   std::set<Vec3> occupied(seeds.begin(), seeds.end());
   std::size_t added = 0;
-  for (const CellIsland& island : islands) {
-    const Vec3 p = m.projector.nearest(island.centroid).point;
+  for (const Vec3& point : points) {
+    const Vec3 p = m.projector.nearest(point).point;
     if (!occupied.insert(p).second) continue;
     seeds.push_back(p);
     if (!constraints.empty()) constraints.append(SeedConstraints::Kind::surface);
     ++added;
   }
   return added;
+}
+
+// Every triangle's three edges, each with the smaller vertex id first, sorted (with repeats).
+std::vector<Edge> edge_uses(const TriangleMesh& mesh) {
+  std::vector<Edge> uses;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      uses.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
+// The edges of exactly one triangle, each with the smaller vertex id first, sorted.
+std::vector<Edge> boundary_edges(const TriangleMesh& mesh) {
+  const std::vector<Edge> uses = edge_uses(mesh);
+  std::vector<Edge> once;
+  for (std::size_t i = 0; i < uses.size(); ++i)
+    if ((i == 0 || uses[i - 1] != uses[i]) && (i + 1 == uses.size() || uses[i + 1] != uses[i]))
+      once.push_back(uses[i]);
+  return once;
+}
+
+// The vertices of `rdt` (extracted from `seeds`) that an output boundary edge may join: the seeds
+// on the input's boundary curves (corners there included). Without feature seeds (rcvt mode),
+// any vertex of a surface with boundaries.
+std::vector<bool> boundary_seeds(const MendContext& m, const std::vector<Vec3>& seeds,
+                                 const SeedConstraints& constraints, const TriangleMesh& rdt) {
+  const std::size_t vertices = rdt.vertices.size();  // the seeds, then the cells' far pieces
+  const bool open = m.surface_topology.boundary_edges > 0;
+  if (constraints.empty()) return std::vector<bool>(vertices, open);
+  std::vector<bool> may(vertices, false);
+  if (!open) return may;
+  const std::vector<Edge> boundary = boundary_edges(m.surface);
+  auto on_boundary = [&](Index u, Index w) {
+    return std::binary_search(boundary.begin(), boundary.end(),
+                              Edge{std::min(u, w), std::max(u, w)});
+  };
+  std::vector<bool> curve_on_boundary(m.features.curves.size());
+  for (std::size_t c = 0; c < curve_on_boundary.size(); ++c) {
+    const auto& v = m.features.curves[c].vertices;
+    curve_on_boundary[c] = v.size() >= 2 && on_boundary(v[0], v[1]);
+  }
+  std::vector<bool> boundary_vertex(m.surface.vertices.size(), false);
+  for (const Edge& e : boundary) boundary_vertex[e[0]] = boundary_vertex[e[1]] = true;
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+    may[s] = constraints.kind[s] == SeedConstraints::Kind::curve &&
+             curve_on_boundary[constraints.curve[s]];
+  for (std::size_t c = 0; c < constraints.corner_seed.size(); ++c)
+    if (boundary_vertex[m.features.corners[c]]) may[constraints.corner_seed[c]] = true;
+  return may;
 }
 
 // An extraction, finished as it would be returned, and what it lacks: the links it cuts that
@@ -86,7 +137,7 @@ Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vect
   a.tips_closed = close_corner_tips(a.finished, constraints.corner_seed, unmade);
   const TopologyReport t = analyze_topology(a.finished);
   a.topology_kept = t.is_manifold() && same_topology(t, m.surface_topology);
-  std::vector<bool> used(seeds.size(), false);
+  std::vector<bool> used(a.finished.vertices.size(), false);
   for (const Triangle& tri : a.finished.triangles)
     for (const Index v : tri) used[v] = true;
   const auto corners = static_cast<std::size_t>(std::count_if(constraints.corner_seed.begin(),
@@ -101,11 +152,7 @@ Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vect
 }  // namespace
 
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
-  std::vector<Edge> edges;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      edges.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
-  std::sort(edges.begin(), edges.end());
+  std::vector<Edge> edges = edge_uses(mesh);
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
 }
@@ -127,23 +174,39 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     Assessment a = assess(m, output.mesh, seeds, constraints);
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.
+    const std::vector<Index> vertex_seed = output.vertex_seed;
     if (!best || !(a.score < best->assessment.score))
       best = Round{std::move(output), seeds, constraints, a, report};
     std::size_t changed = 0;
     if (round < rounds) {
+      // Where the output shows a defect, from the seeds as extracted (one RVD each): a seed in
+      // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
+      // its dual Voronoi edge crosses the surface (Delaunay refinement).
+      std::vector<Vec3> island_points, refinement;
+      if (!a.topology_kept) {
+        for (const CellIsland& island : cell_islands(m.surface, seeds))
+          island_points.push_back(island.centroid);
+        const OutputDefects defects =
+            find_output_defects(a.finished, boundary_seeds(m, seeds, constraints, a.finished),
+                                m.surface_topology.orientable);
+        std::vector<Triangle> dual;  // the defects' triangles, in seeds
+        for (Triangle t : defects.triangles) {
+          for (Index& v : t) v = vertex_seed[v];
+          dual.push_back(t);
+        }
+        refinement = refinement_points(m.surface, seeds, dual);
+      }
       if (!a.missing.empty()) {
         const std::size_t mended =
             mend_missing_links(seeds, constraints, a.missing, m.curves, m.spacing);
         report.links_mended += mended;
         changed += mended;
       }
-      // The cells' pieces cost one more RVD: only when the output shows a defect.
-      if (!a.topology_kept) {
-        const std::size_t added =
-            seed_islands(m, cell_islands(m.surface, seeds), seeds, constraints);
-        report.islands += added;
-        changed += added;
-      }
+      const std::size_t islands = add_surface_seeds(m, island_points, seeds, constraints);
+      const std::size_t refined = add_surface_seeds(m, refinement, seeds, constraints);
+      report.islands += islands;
+      report.refined += refined;
+      changed += islands + refined;
     }
     if (changed == 0) break;
     ++report.rounds;

@@ -27,6 +27,7 @@ struct MendContext {
 struct MendReport {
   std::size_t links_mended = 0;   // seeds that joined a curve, or came in on one
   std::size_t islands = 0;        // seeds added in the extra pieces of cells
+  std::size_t refined = 0;        // seeds added where defects' Voronoi edges cross the surface
   std::size_t links_flipped = 0;  // links still missing after the rounds, made by an edge flip
   std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_tips)
   int rounds = 0;                 // rounds that changed the seeds

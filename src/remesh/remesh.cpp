@@ -15,6 +15,7 @@
 #include "cvtmesh/sampling.hpp"
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
+#include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
 
 namespace cvtmesh {
@@ -182,10 +183,13 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   result.polish_rounds += mends.polish_rounds;
   result.links_mended = mends.links_mended;
   result.islands_seeded = mends.islands;
+  result.seeds_refined = mends.refined;
   result.links_flipped = mends.links_flipped;
   result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
   result.mesh = std::move(output.mesh);
+  // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold.
+  result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   if (!constraints.empty()) {
     const std::vector<FeatureLink> links =

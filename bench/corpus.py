@@ -1,0 +1,227 @@
+#!/usr/bin/env python3
+"""Corpus benchmark: remesh every mesh of ../shared/data and ../shared/data/corpus with the
+defaults, at each requested vertex count, and print one row per run (issue 18).
+
+Each row: manifold output, same topology as the input (components, Euler characteristic and
+boundary loops per the quality report), seeds added by topology control, θmin, Qmin, % of
+triangles under 30°, Hausdorff mean and max (% of the bbox diagonal), feature distance, corners
+kept, wall time and peak memory. With ../shared/tools/vorpalite-iso present, vorpalite's row for
+the same input and count follows ours, measured by `cvtmesh quality --ref`.
+
+    bench/corpus.py [--counts 1000,5000,10000] [--jobs J] [--no-vorpalite] [--only NAME,...]
+                    [--build build] [--data DIR] [--timeout S] [--markdown] [REMESH OPTIONS]
+
+Runs are independent processes, J at a time (default: the core count), each single-threaded
+in cvtmesh (--threads 1) so that J runs do not fight over the cores; vorpalite likewise gets
+sys:max_threads=1. Times are wall seconds of the whole command; peak memory is the process's
+maximum resident set (getrusage of the child).
+"""
+
+import argparse
+import concurrent.futures
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+MESH_EXTS = {".off", ".obj", ".ply", ".stl"}
+
+
+def run_measured(cmd, timeout):
+    """Runs cmd; returns (returncode, stdout, stderr, wall seconds, peak RSS in MB)."""
+    start = time.monotonic()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, err = proc.communicate()
+        return -999, out, "timeout", time.monotonic() - start, 0.0
+    wall = time.monotonic() - start
+    # wait4 has already reaped the child inside communicate(); RUSAGE_CHILDREN then holds the
+    # maximum over all children so far, so each run uses its own process pool worker below.
+    peak_kb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    return proc.returncode, out, err, wall, peak_kb / 1024.0
+
+
+def quality_row(q):
+    """The fields of a quality report (cvtmesh quality --ref --json) that the table shows."""
+    ref = q.get("reference", {})
+    # Orientability is the input's to keep (a Möbius strip stays one): same_topology covers it.
+    manifold = q["nonmanifold_edges"] == 0 and q["nonmanifold_vertices"] == 0
+    return {
+        "manifold": manifold,
+        "same_topology": bool(q.get("same_topology")),
+        "components": q["components"], "chi": q["euler_characteristic"],
+        "loops": q["boundary_loops"],
+        "ref": (ref.get("components"), ref.get("euler_characteristic"), ref.get("boundary_loops")),
+        "vertices": q["vertices"], "theta_min": q["angle_min_deg"], "q_min": q["q_min"],
+        "pct30": q["pct_angle_below_30"], "hd_mean": q.get("hausdorff_mean_pct"),
+        "hd_max": q.get("hausdorff_max_pct"),
+    }
+
+
+def run_cvtmesh(exe, mesh, n, timeout, extra):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "out.off")
+        rc, stdout, stderr, wall, mem = run_measured(
+            [exe, "remesh", str(mesh), out, "--vertices", str(n), "--json", "--quiet",
+             "--threads", "1"] + extra, timeout)
+        if rc != 0:
+            return {"tool": "cvtmesh", "error": (stderr.strip().splitlines() or ["?"])[-1][:80],
+                    "time": wall, "mem": mem}
+        j = json.loads(stdout)
+        row = quality_row(j)
+        row.update({
+            "tool": "cvtmesh", "time": wall, "mem": mem,
+            "seeds_added": j.get("seeds_added", j.get("islands_seeded", 0)),
+            "theta_min_away": j.get("angle_min_away_deg"),
+            "feature_max": j.get("feature_hausdorff_max_pct"),
+            "corners": f'{j.get("corners_out", 0)}/{j.get("corners_in", 0)}',
+        })
+        return row
+
+
+def run_vorpalite(exe, vorpalite, mesh, n, timeout):
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "out.obj")
+        rc, _, stderr, wall, mem = run_measured(
+            [vorpalite, str(mesh), out, str(n), "sys:max_threads=1"], timeout)
+        if rc != 0 or not os.path.exists(out):
+            return {"tool": "vorpalite", "error": f"exit {rc}", "time": wall, "mem": mem}
+        q = subprocess.run([exe, "quality", out, "--ref", str(mesh), "--json"],
+                           capture_output=True, text=True)
+        if q.returncode != 0:
+            return {"tool": "vorpalite", "error": q.stderr.strip()[:80], "time": wall, "mem": mem}
+        row = quality_row(json.loads(q.stdout))
+        row.update({"tool": "vorpalite", "time": wall, "mem": mem})
+        return row
+
+
+def job(args):
+    kind, exe, vorpalite, mesh, n, timeout, extra = args
+    if kind == "cvtmesh":
+        return run_cvtmesh(exe, mesh, n, timeout, extra)
+    return run_vorpalite(exe, vorpalite, mesh, n, timeout)
+
+
+def fmt(v, spec):
+    return "-" if v is None else format(v, spec)
+
+
+def print_row(name, n, r, markdown):
+    if "error" in r:
+        cells = [name, str(n), r["tool"], "ERROR: " + r["error"]] + [""] * 12
+    else:
+        cells = [name, str(n), r["tool"], "yes" if r["manifold"] else "NO",
+                 "yes" if r["same_topology"] else "NO", fmt(r.get("seeds_added"), "d"),
+                 fmt(r["theta_min"], ".1f"), fmt(r.get("theta_min_away"), ".1f"),
+                 fmt(r["q_min"], ".3f"), fmt(r["pct30"], ".2f"), fmt(r["hd_mean"], ".3f"),
+                 fmt(r["hd_max"], ".2f"), fmt(r.get("feature_max"), ".2f"),
+                 r.get("corners", "-"), f'{r["time"]:.2f}', f'{r["mem"]:.0f}']
+    if markdown:
+        print("| " + " | ".join(cells) + " |")
+    else:
+        print("  ".join(cells))
+    sys.stdout.flush()
+
+
+HEADER = ["mesh", "N", "tool", "manifold", "same topo", "seeds added", "θmin", "θmin away",
+          "Qmin", "% <30°", "Hd mean %", "Hd max %", "feature Hd %", "corners", "time s", "MB"]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--counts", default="1000,5000,10000")
+    p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--build", default=str(ROOT / "build"))
+    p.add_argument("--data", default=os.environ.get("CVTMESH_SHARED_DATA",
+                                                    str(ROOT.parent / "shared" / "data")))
+    p.add_argument("--no-vorpalite", action="store_true")
+    p.add_argument("--only", default="", help="comma-separated file names to run")
+    p.add_argument("--timeout", type=float, default=600)
+    p.add_argument("--markdown", action="store_true")
+    a, extra = p.parse_known_args()  # anything else goes to `cvtmesh remesh`
+
+    exe = str(Path(a.build) / "apps" / "cvtmesh" / "cvtmesh")
+    if not os.access(exe, os.X_OK):
+        sys.exit(f"corpus.py: {exe}: not built (run ./scripts/build)")
+    data = Path(a.data)
+    if not data.is_dir():
+        sys.exit(f"corpus.py: {data}: no shared data; nothing to measure")
+    meshes = sorted(f for d in (data, data / "corpus") if d.is_dir() for f in d.iterdir()
+                    if f.suffix.lower() in MESH_EXTS)
+    if a.only:
+        names = set(a.only.split(","))
+        meshes = [m for m in meshes if m.name in names]
+    vorpalite = data.parent / "tools" / "vorpalite-iso"
+    use_vorpalite = not a.no_vorpalite and os.access(vorpalite, os.X_OK)
+    counts = [int(c) for c in a.counts.split(",")]
+
+    tasks = []
+    for mesh in meshes:
+        for n in counts:
+            tasks.append(("cvtmesh", exe, str(vorpalite), mesh, n, a.timeout, extra))
+            if use_vorpalite:
+                tasks.append(("vorpalite", exe, str(vorpalite), mesh, n, a.timeout, extra))
+    if a.markdown:
+        print("| " + " | ".join(HEADER) + " |")
+        print("|" + "---|" * len(HEADER))
+    else:
+        print("  ".join(HEADER))
+    # One worker process per run (max_tasks_per_child=1) so that RUSAGE_CHILDREN's peak is
+    # that run's alone.
+    results = {}
+    with concurrent.futures.ProcessPoolExecutor(max_workers=a.jobs,
+                                                max_tasks_per_child=1) as pool:
+        futures = {pool.submit(job, t): t for t in tasks}
+        pending_order = [(t[3].name, t[4], t[0]) for t in tasks]
+        next_to_print = 0
+        for f in concurrent.futures.as_completed(futures):
+            t = futures[f]
+            results[(t[3].name, t[4], t[0])] = f.result()
+            while next_to_print < len(pending_order) and pending_order[next_to_print] in results:
+                key = pending_order[next_to_print]
+                print_row(key[0], key[1], results[key], a.markdown)
+                next_to_print += 1
+
+    ours = [r for (_, _, tool), r in results.items() if tool == "cvtmesh"]
+    ok = [r for r in ours if "error" not in r]
+    print()
+    print(f"cvtmesh runs: {len(ours)}, errors {len(ours) - len(ok)}, "
+          f"manifold {sum(r['manifold'] for r in ok)}/{len(ours)}, "
+          f"same topology {sum(r['same_topology'] for r in ok)}/{len(ours)}, "
+          f"θmin < 10°: {sum(r['theta_min'] < 10 for r in ok)}, "
+          f"seeds added {sum(r.get('seeds_added') or 0 for r in ok)}")
+    if use_vorpalite:
+        better, both, ratios = 0, 0, []
+        for (name, n, tool), r in results.items():
+            if tool != "cvtmesh" or "error" in r:
+                continue
+            v = results.get((name, n, "vorpalite"))
+            if not v or "error" in v:
+                continue
+            ratios.append(r["time"] / max(v["time"], 1e-9))
+            if v["same_topology"] and v["manifold"]:
+                both += 1
+                better += r["theta_min"] >= v["theta_min"] and r["q_min"] >= v["q_min"]
+        vs = [r for (_, _, tool), r in results.items() if tool == "vorpalite"]
+        vok = [r for r in vs if "error" not in r]
+        ratios.sort()
+        print(f"vorpalite runs: {len(vs)}, errors {len(vs) - len(vok)}, "
+              f"manifold {sum(r['manifold'] for r in vok)}/{len(vs)}, "
+              f"same topology {sum(r['same_topology'] for r in vok)}/{len(vs)}")
+        if both:
+            print(f"where vorpalite keeps topology: cvtmesh θmin and Qmin at least vorpalite's on "
+                  f"{better}/{both} runs")
+        if ratios:
+            print(f"time ratio cvtmesh / vorpalite: median {ratios[len(ratios) // 2]:.2f}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,25 @@
+#include "remesh/make_manifold.hpp"
+
+#include <algorithm>
+
+#include "remesh/output_defects.hpp"
+
+namespace cvtmesh {
+
+std::size_t make_manifold(TriangleMesh& mesh, bool oriented) {
+  const std::size_t before = mesh.triangles.size();
+  // Boundary edges are allowed here: only what makes the mesh non-manifold goes, and folds when
+  // the input is oriented (a non-orientable one, a Möbius strip, has a fold wherever it closes).
+  const std::vector<bool> may_bound(mesh.vertices.size(), true);
+  for (;;) {
+    OutputDefects d = find_output_defects(mesh, may_bound, oriented);
+    if (d.empty()) break;
+    std::sort(d.triangles.begin(), d.triangles.end());
+    std::erase_if(mesh.triangles, [&](const Triangle& t) {
+      return std::binary_search(d.triangles.begin(), d.triangles.end(), t);
+    });
+  }
+  return before - mesh.triangles.size();
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,40 @@
+// Where the restricted Delaunay triangulation fails the topological ball property (paper §2,
+// Theorem 1), seen on the triangulation itself: an edge with three or more triangles (a Voronoi
+// face meeting the surface in several arcs), a vertex whose triangles form several fans (a cell
+// that is not a disc), a boundary edge where the input has none (a Voronoi edge that misses the
+// surface where it should cross it), two triangles that use an edge the same way (a fold). A cell
+// in several pieces (cell_islands) shows up as some of these, but many of these come from cells
+// in one piece, so the triangulation is what topology control checks.
+#pragma once
+
+#include <vector>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+struct OutputDefects {
+  std::vector<Triangle> triangles;  // every triangle at a defect, as in the triangulation
+  std::size_t nonmanifold_edges = 0, nonmanifold_vertices = 0;
+  std::size_t stray_boundary_edges = 0;  // boundary edges with an end not allowed on a boundary
+  std::size_t folded_edges = 0;          // edges that two triangles use in the same direction
+
+  bool empty() const { return triangles.empty(); }
+};
+
+// The defects of `rdt` (vertices: the seeds, by id). A boundary edge is a defect unless both its
+// ends have may_bound set (seeds on the input's boundary curves). Folds count only with `folds`
+// (a non-orientable input has them wherever its output closes up).
+OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<bool>& may_bound,
+                                  bool folds = true);
+
+// Refinement points for the defective triangles (Boissonnat-Oudot / Cheng-Dey-Ramos Delaunay
+// refinement, the terminating step the paper's §4.4 points to): the points where each triangle's
+// dual Voronoi edge crosses the surface, the centres of its surface Delaunay balls. Each is
+// farther from every seed than the ball's radius, so inserting it refines the sampling where the
+// ball property fails. Points within half a ball radius of one kept earlier are dropped. In
+// traversal order: independent of the thread count.
+std::vector<Vec3> refinement_points(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
+                                    const std::vector<Triangle>& triangles);
+
+}  // namespace cvtmesh

@@ -1,0 +1,102 @@
+#include "voronoi/cell_pieces.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "geometry/union_find.hpp"
+
+namespace cvtmesh {
+
+void CellPieceCollector::begin(std::size_t chunks) {
+  polygon_chunks_.assign(chunks, {});
+  side_chunks_.assign(chunks, {});
+}
+
+void CellPieceCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
+  const auto& v = p.vertices;
+  Polygon out{p.seed, p.triangle, 0, {}, v[0].point};
+  for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+    const double a = triangle_area(v[0].point, v[k].point, v[k + 1].point);
+    out.area += a;
+    out.moment += (a / 3) * (v[0].point + v[k].point + v[k + 1].point);
+  }
+  if (out.area > 0) out.centre = (1 / out.area) * out.moment;
+  const Triangle& t = surface_.triangles[p.triangle];
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const RvdVertex &a = v[k], &b = v[(k + 1) % v.size()];
+    // The side lies on input edge e when both ends are on it (symbol -(e+1)).
+    for (std::int32_t s : a.symbols) {
+      if (s >= 0 || (s != b.symbols[0] && s != b.symbols[1])) continue;
+      const int e = -(s + 1);
+      const Index u = t[e], w = t[(e + 1) % 3];
+      side_chunks_[chunk].push_back(
+          {p.seed, {std::min(u, w), std::max(u, w)}, polygon_chunks_[chunk].size()});
+    }
+  }
+  polygon_chunks_[chunk].push_back(out);
+}
+
+void CellPieceCollector::end() {
+  std::vector<Polygon> polygons;
+  std::vector<Side> sides;
+  for (std::size_t c = 0; c < polygon_chunks_.size(); ++c) {
+    for (Side s : side_chunks_[c]) {
+      s.polygon += polygons.size();
+      sides.push_back(s);
+    }
+    polygons.insert(polygons.end(), polygon_chunks_[c].begin(), polygon_chunks_[c].end());
+  }
+  polygon_chunks_.clear();
+  side_chunks_.clear();
+  // A cell meets an input edge in one segment (the cell is convex): its polygons on either side
+  // of the edge both have that segment as a side, and are one piece.
+  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
+    return std::tie(a.seed, a.edge, a.polygon) < std::tie(b.seed, b.edge, b.polygon);
+  });
+  UnionFind roots(polygons.size());
+  for (std::size_t i = 1; i < sides.size(); ++i)
+    if (sides[i].seed == sides[i - 1].seed && sides[i].edge == sides[i - 1].edge)
+      roots.unite(sides[i].polygon, sides[i - 1].polygon);
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> slot(polygons.size(), kNone);  // root -> index in pieces_
+  pieces_.clear();
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    const std::size_t r = roots.find(p);
+    if (slot[r] == kNone) {
+      slot[r] = pieces_.size();
+      pieces_.push_back({polygons[p].seed, p, 0, {}, {}, -1});
+    }
+    CellPiece& piece = pieces_[slot[r]];
+    piece.area += polygons[p].area;
+    piece.moment += polygons[p].moment;
+    if (polygons[p].area > piece.largest_area) {
+      piece.largest_area = polygons[p].area;
+      piece.largest_centre = polygons[p].centre;
+    }
+  }
+  std::vector<std::size_t> order(pieces_.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const CellPiece &x = pieces_[a], &y = pieces_[b];
+    return std::make_tuple(x.seed, -x.area, x.first) < std::make_tuple(y.seed, -y.area, y.first);
+  });
+  std::vector<std::size_t> rank(order.size());
+  std::vector<CellPiece> sorted;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    rank[order[i]] = i;
+    sorted.push_back(pieces_[order[i]]);
+  }
+  pieces_ = std::move(sorted);
+  piece_of_.clear();
+  for (std::size_t p = 0; p < polygons.size(); ++p)
+    piece_of_.emplace_back(polygons[p].seed, polygons[p].triangle, rank[slot[roots.find(p)]]);
+  std::sort(piece_of_.begin(), piece_of_.end());
+}
+
+std::size_t CellPieceCollector::piece_at(Index seed, Index triangle) const {
+  const auto it = std::lower_bound(piece_of_.begin(), piece_of_.end(),
+                                   std::make_tuple(seed, triangle, std::size_t{0}));
+  return std::get<2>(*it);
+}
+
+}  // namespace cvtmesh

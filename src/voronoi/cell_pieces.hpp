@@ -1,0 +1,60 @@
+// The pieces of the restricted Voronoi cells (paper §4.4): a cell meets the surface in one piece
+// when the topological ball property holds, in several where it reaches across a thin part, onto
+// a nearby sheet or component, or through a self-intersection. Polygons of one cell are one piece
+// when they share a stretch of an input edge; the surface's connectivity comes from its vertex
+// ids, so sheets that only cross or touch in space stay apart.
+#pragma once
+
+#include <array>
+#include <tuple>
+#include <vector>
+
+#include "cvtmesh/rvd.hpp"
+
+namespace cvtmesh {
+
+struct CellPiece {
+  Index seed;
+  std::size_t first;  // its first polygon (in traversal order), for a stable order
+  double area;
+  Vec3 moment;          // area × centroid
+  Vec3 largest_centre;  // the centroid of its largest polygon: a point on the surface
+  double largest_area;
+};
+
+// Collects one traversal's polygons; after it, each polygon's piece and each cell's pieces,
+// largest first. Independent of the thread count (polygons are numbered in chunk order).
+class CellPieceCollector : public PolygonSink {
+ public:
+  explicit CellPieceCollector(const TriangleMesh& surface) : surface_(surface) {}
+  void begin(std::size_t chunks) override;
+  void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
+  void end() override;
+
+  // By seed, then area (largest first), then first polygon.
+  const std::vector<CellPiece>& pieces() const { return pieces_; }
+  // The index in pieces() of the piece holding the polygon of `seed` on input `triangle` (a cell
+  // meets a triangle in at most one polygon: both are convex).
+  std::size_t piece_at(Index seed, Index triangle) const;
+
+ private:
+  struct Polygon {
+    Index seed, triangle;
+    double area;
+    Vec3 moment;
+    Vec3 centre;  // its centroid; a vertex of it if it has no area
+  };
+  struct Side {
+    Index seed;
+    std::array<Index, 2> edge;  // input vertex ids, the smaller first
+    std::size_t polygon;
+  };
+  const TriangleMesh& surface_;
+  std::vector<std::vector<Polygon>> polygon_chunks_;
+  std::vector<std::vector<Side>> side_chunks_;
+  std::vector<CellPiece> pieces_;
+  // (seed, triangle, piece index), sorted: what piece_at searches.
+  std::vector<std::tuple<Index, Index, std::size_t>> piece_of_;
+};
+
+}  // namespace cvtmesh

@@ -1,0 +1,51 @@
+#include "voronoi/multi_nerve.hpp"
+
+#include "cvtmesh/repair.hpp"
+#include "voronoi/dual_triangle.hpp"
+
+namespace cvtmesh {
+
+void MultiNerveBuilder::begin(std::size_t chunks) {
+  pieces_.begin(chunks);
+  chunks_.assign(chunks, {});
+}
+
+void MultiNerveBuilder::polygon(std::size_t chunk, const RvdPolygon& poly) {
+  pieces_.polygon(chunk, poly);
+  for (std::size_t k = 0; k < poly.vertices.size(); ++k)
+    if (const auto t = dual_triangle(poly, k)) chunks_[chunk].push_back({*t, poly.triangle});
+}
+
+void MultiNerveBuilder::end() {
+  pieces_.end();
+  const std::vector<Vec3>& seeds = rvd_.seeds();
+  const std::vector<CellPiece>& pieces = pieces_.pieces();
+  result_ = {};
+  result_.vertices = seeds;
+  vertex_seed_.resize(seeds.size());
+  for (Index s = 0; s < seeds.size(); ++s) vertex_seed_[s] = s;
+  // Each piece's vertex: its seed for the cell's first (largest) piece, a new one otherwise.
+  std::vector<Index> vertex(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (i == 0 || pieces[i].seed != pieces[i - 1].seed) {
+      vertex[i] = pieces[i].seed;
+      continue;
+    }
+    vertex[i] = static_cast<Index>(result_.vertices.size());
+    result_.vertices.push_back(pieces[i].largest_centre);
+    vertex_seed_.push_back(pieces[i].seed);
+  }
+  // The three polygons around a type-C vertex lie in the input triangle it is in.
+  for (const auto& found : chunks_)
+    for (const Found& f : found) {
+      Triangle t;
+      for (int k = 0; k < 3; ++k) t[k] = vertex[pieces_.piece_at(f.seeds[k], f.triangle)];
+      result_.triangles.push_back(t);
+    }
+  chunks_.clear();
+  // A Voronoi edge crossing the surface several times within one piece of each of its three
+  // cells gives the same triangle several times.
+  remove_duplicate_triangles(result_);
+}
+
+}  // namespace cvtmesh
