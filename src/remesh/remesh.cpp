@@ -188,8 +188,10 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
   result.mesh = std::move(output.mesh);
-  // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold.
-  result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
+  // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold. Only for
+  // a manifold input: a non-manifold input edge is a feature the output keeps (issue 18).
+  if (result.input_topology.is_manifold())
+    result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   if (!constraints.empty()) {
     const std::vector<FeatureLink> links =
