@@ -8,6 +8,10 @@ std::vector<CellIsland> cell_islands(const TriangleMesh& surface, const std::vec
   const RestrictedVoronoiDiagram rvd(surface, seeds);
   CellPieceCollector collector(surface);
   rvd.traverse(collector);
+  return cell_islands(collector);
+}
+
+std::vector<CellIsland> cell_islands(const CellPieceCollector& collector) {
   // Each cell's pieces come largest first: the others are islands.
   const std::vector<CellPiece>& pieces = collector.pieces();
   std::vector<CellIsland> islands;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
+#include "voronoi/cell_pieces.hpp"
 
 namespace cvtmesh {
 
@@ -21,5 +22,7 @@ struct CellIsland {
 // the input triangle they start on. Pieces are joined across input edges they share a stretch
 // of; the surface's connectivity comes from its vertex ids. Independent of the thread count.
 std::vector<CellIsland> cell_islands(const TriangleMesh& surface, const std::vector<Vec3>& seeds);
+// The same, from a traversal already made (CellPieceCollector as one of its sinks).
+std::vector<CellIsland> cell_islands(const CellPieceCollector& pieces);
 
 }  // namespace cvtmesh

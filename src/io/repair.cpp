@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "cvtmesh/repair.hpp"
-#include "geometry/union_find.hpp"
+#include "geometry/manifold_defects.hpp"
 
 namespace cvtmesh {
 
@@ -30,53 +30,6 @@ void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
   mesh.vertices.resize(n);
   for (Triangle& t : mesh.triangles)
     for (Index& v : t) v = new_index[v];
-}
-
-// The vertices where `tris` is not a manifold: ends of edges with three or more triangles, and
-// vertices whose triangles form several fans (joined across edges of exactly two triangles).
-// Triangles with a repeated corner are left out (repair drops them).
-std::vector<bool> nonmanifold_vertices(std::size_t n, const std::vector<Triangle>& tris) {
-  struct Use {
-    Index a, b;
-    std::size_t triangle;
-  };
-  std::vector<Use> uses;
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    const Triangle& f = tris[t];
-    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-    for (int k = 0; k < 3; ++k)
-      uses.push_back({std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]), t});
-  }
-  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
-    return std::tie(x.a, x.b, x.triangle) < std::tie(y.a, y.b, y.triangle);
-  });
-  std::vector<bool> bad(n, false);
-  UnionFind fans(3 * tris.size());  // corners (triangle, k) around a vertex joined into fans
-  auto corner = [&](std::size_t t, Index v) {
-    return 3 * t + static_cast<std::size_t>(tris[t][0] == v ? 0 : tris[t][1] == v ? 1 : 2);
-  };
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b) ++j;
-    if (j - i >= 3) bad[uses[i].a] = bad[uses[i].b] = true;
-    if (j - i == 2)
-      for (const Index v : {uses[i].a, uses[i].b})
-        fans.unite(corner(uses[i].triangle, v), corner(uses[i + 1].triangle, v));
-    i = j;
-  }
-  std::vector<std::size_t> fan_of(n, static_cast<std::size_t>(-1));
-  for (std::size_t t = 0; t < tris.size(); ++t) {
-    const Triangle& f = tris[t];
-    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t root = fans.find(3 * t + k);
-      if (fan_of[f[k]] == static_cast<std::size_t>(-1))
-        fan_of[f[k]] = root;
-      else if (fan_of[f[k]] != root)
-        bad[f[k]] = true;
-    }
-  }
-  return bad;
 }
 
 // Merges vertices with exactly equal coordinates where that stitches the mesh, as CGAL's
@@ -109,7 +62,8 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart
     std::vector<Triangle> merged = mesh.triangles;
     for (Triangle& t : merged)
       for (Index& v : t) v = target(v);
-    const std::vector<bool> bad = nonmanifold_vertices(p.size(), merged);
+    // Boundary edges and folds are allowed: only a non-manifold edge or vertex splits a group.
+    const std::vector<bool> bad = find_manifold_defects(p.size(), merged, {}, false).vertex;
     bool split = false;
     for (std::size_t v = 0; v < p.size(); ++v)
       if (bad[v] && merging[v] && representative[v] == v) {

@@ -5,7 +5,6 @@
 #include <set>
 #include <tuple>
 
-#include "cvt/cell_islands.hpp"
 #include "cvtmesh/quality.hpp"
 #include "remesh/flip_links.hpp"
 #include "remesh/output_defects.hpp"
@@ -179,13 +178,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       best = Round{std::move(output), seeds, constraints, a, report};
     std::size_t changed = 0;
     if (round < rounds) {
-      // Where the output shows a defect, from the seeds as extracted (one RVD each): a seed in
+      // Where the output shows a defect, from the seeds as extracted (one RVD for both): a seed in
       // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
       // its dual Voronoi edge crosses the surface (Delaunay refinement).
-      std::vector<Vec3> island_points, refinement;
+      DefectSeeds found;
       if (!a.topology_kept) {
-        for (const CellIsland& island : cell_islands(m.surface, seeds))
-          island_points.push_back(island.centroid);
         const OutputDefects defects =
             find_output_defects(a.finished, boundary_seeds(m, seeds, constraints, a.finished),
                                 m.surface_topology.orientable);
@@ -194,7 +191,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
           for (Index& v : t) v = vertex_seed[v];
           dual.push_back(t);
         }
-        refinement = refinement_points(m.surface, seeds, dual);
+        found = defect_seeds(m.surface, seeds, dual);
       }
       if (!a.missing.empty()) {
         const std::size_t mended =
@@ -202,8 +199,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
         report.links_mended += mended;
         changed += mended;
       }
-      const std::size_t islands = add_surface_seeds(m, island_points, seeds, constraints);
-      const std::size_t refined = add_surface_seeds(m, refinement, seeds, constraints);
+      const std::size_t islands = add_surface_seeds(m, found.islands, seeds, constraints);
+      const std::size_t refined = add_surface_seeds(m, found.refinement, seeds, constraints);
       report.islands += islands;
       report.refined += refined;
       changed += islands + refined;

@@ -28,13 +28,20 @@ struct OutputDefects {
 OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<bool>& may_bound,
                                   bool folds = true);
 
-// Refinement points for the defective triangles (Boissonnat-Oudot / Cheng-Dey-Ramos Delaunay
-// refinement, the terminating step the paper's §4.4 points to): the points where each triangle's
-// dual Voronoi edge crosses the surface, the centres of its surface Delaunay balls. Each is
-// farther from every seed than the ball's radius, so inserting it refines the sampling where the
-// ball property fails. Points within half a ball radius of one kept earlier are dropped. In
-// traversal order: independent of the thread count.
-std::vector<Vec3> refinement_points(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
-                                    const std::vector<Triangle>& triangles);
+// Where topology control adds seeds, from one traversal of the seeds' RVD:
+struct DefectSeeds {
+  // the centroid of each piece of a cell but its largest (cell_islands)
+  std::vector<Vec3> islands;
+  // refinement points for the defective triangles (Boissonnat-Oudot / Cheng-Dey-Ramos Delaunay
+  // refinement, the terminating step the paper's §4.4 points to): the points where each
+  // triangle's dual Voronoi edge crosses the surface, the centres of its surface Delaunay balls.
+  // Each is farther from every seed than the ball's radius, so inserting it refines the sampling
+  // where the ball property fails. Points within half a ball radius of one kept earlier are
+  // dropped.
+  std::vector<Vec3> refinement;
+};
+// In traversal order: independent of the thread count. `triangles` are in seed ids.
+DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
+                         const std::vector<Triangle>& triangles);
 
 }  // namespace cvtmesh
