@@ -410,6 +410,23 @@ TEST(CliRemesh, FeatureKeysFlagsAndEdgeFile) {
   EXPECT_NE(garbage.err.find("garbage.txt:1:"), std::string::npos) << garbage.err;
 }
 
+TEST(CliRemesh, JaggedFoldsAreNoFeaturesByDefaultButAnExplicitAngleForcesThem) {
+  TempDir dir;
+  TriangleMesh bumpy = icosphere(3);  // vertices alternately in and out: folds of over 60°
+  for (Index v = 0; v < bumpy.vertices.size(); ++v)
+    bumpy.vertices[v] = (v % 3 == 0 ? 1.2 : 0.95) * bumpy.vertices[v];
+  write_mesh(dir / "bumpy.off", bumpy);
+  const std::string io = quoted(dir / "bumpy.off") + " " + quoted(dir / "out.off");
+  auto features_in = [&](const std::string& flags) {
+    const CliRun r =
+        run_cli(dir, "remesh --json --quiet --no-hausdorff --vertices 400 " + io + " " + flags);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(r.out)["feature_edges_in"].get<int>();
+  };
+  EXPECT_EQ(features_in(""), 0);
+  EXPECT_GT(features_in("--feature-angle 60"), 0);
+}
+
 TEST(CliRemesh, SeedsFileGivesTheStartAndTheSize) {
   TempDir dir;
   const TriangleMesh sphere = icosphere(4);

@@ -107,12 +107,40 @@ TEST(Features, UserEdgesAreKeptAndChecked) {
 
 TEST(Features, ShortSharpCurvesAreDroppedButNeverBoundaries) {
   FeatureSettings s;
-  s.min_sharp_curve_length = 3;  // the cube's creases are 2 long
+  s.scale = 1.5;  // the cube's creases are 2 long, under twice that
   EXPECT_TRUE(detect_features(testing::cube(4), s).empty());
-  s.min_sharp_curve_length = 1.5;
+  s.scale = 0.75;
   EXPECT_EQ(detect_features(testing::cube(4), s).curves.size(), 12u);
-  s.min_sharp_curve_length = 100;
+  s.scale = 50;
   EXPECT_EQ(detect_features(testing::disk(4, 16), s).curves.size(), 1u);
+}
+
+// A sphere whose vertices alternate in and out by about an edge length: many of its edges fold by
+// more than 60°, but at a scale of a few edges its surface is rough all round, with no crease.
+TriangleMesh bumpy_sphere() {
+  TriangleMesh m = testing::icosphere(3);
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    m.vertices[v] = (v % 3 == 0 ? 1.2 : 0.95) * m.vertices[v];
+  return m;
+}
+
+TEST(Features, JaggedFoldsAreNoCreasesAtTheOutputScaleButFlatSidedCreasesAre) {
+  const TriangleMesh bumpy = bumpy_sphere();
+  FeatureSettings s;
+  EXPECT_FALSE(detect_features(bumpy, s).empty());  // at the input's own scale: sharp edges
+  s.scale = 0.2;                                    // a little more than its edge length
+  s.creases_at_scale = false;                       // the length rule alone keeps some curves
+  EXPECT_FALSE(detect_features(bumpy, s).empty());
+  s.creases_at_scale = true;
+  EXPECT_TRUE(detect_features(bumpy, s).empty());
+  // The cube's creases have flat sides: all kept, at a scale that resolves them.
+  s.scale = 0.75;
+  EXPECT_EQ(detect_features(testing::cube(8), s).curves.size(), 12u);
+  // A boundary is kept whatever the sides look like, and nothing else is.
+  TriangleMesh half = testing::hemisphere(6, 12);
+  for (Index v = 0; v < half.vertices.size(); ++v)
+    half.vertices[v] = (v % 3 == 0 ? 1.2 : 0.95) * half.vertices[v];
+  EXPECT_EQ(detect_features(half, s).edges.size(), 12u);  // the 12 boundary edges
 }
 
 TEST(Features, FeatureEdgeFileIsReadWithCommentsAndCheckedLineByLine) {

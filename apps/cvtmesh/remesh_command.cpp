@@ -31,6 +31,7 @@ struct RemeshOptions {
   int threads = 0;
   std::size_t samples = kReportSamples;
   bool quiet = false, json = false, no_features = false, no_hausdorff = false;
+  bool feature_angle_given = false;
 };
 
 int run_remesh(RemeshOptions o) {
@@ -44,6 +45,7 @@ int run_remesh(RemeshOptions o) {
     fmt::print(stderr, "{}: repaired: {}\n", o.input, r.summary());
   RemeshSettings& s = o.settings;
   s.features.sharp_edges = !o.no_features;
+  s.features.creases_at_scale = !o.feature_angle_given;  // an explicit angle forces its creases
   if (!o.feature_edges.empty()) {
     s.features.user_edges = read_feature_edges(o.feature_edges);
     try {  // checked here, to name the file in the error
@@ -196,10 +198,14 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::IsMember({"rcvt", "ccvt", "both"}));
   cmd->add_option("--seed", o->settings.seed, "Random seed of the initial sampling")
       ->default_val(1);
-  auto* angle = cmd->add_option("--feature-angle", o->settings.features.angle_deg,
-                                "Sharp edge: its faces' normals differ by more than this (deg)")
-                    ->default_val(60)
-                    ->check(CLI::Range(0.0, 180.0));
+  auto* angle =
+      cmd->add_option(
+             "--feature-angle", o->settings.features.angle_deg,
+             "Sharp edge: its faces' normals differ by more than this (deg). Given, it forces "
+             "them; by default, only creases with flat sides at the output's "
+             "scale are kept")
+          ->default_val(60)
+          ->check(CLI::Range(0.0, 180.0));
   cmd->add_flag("--no-features", o->no_features,
                 "Keep no sharp edges (boundaries and --feature-edges are still kept)")
       ->excludes(angle);
@@ -208,9 +214,10 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
   add_threads_option(*cmd, o->threads);
-  cmd->callback([o, &run, vertices, length, relative, seeds] {
+  cmd->callback([o, &run, vertices, length, relative, seeds, angle] {
     if (vertices->count() + length->count() + relative->count() + seeds->count() == 0)
       throw CLI::RequiredError("--vertices, --edge-length, --edge-length-rel or --seeds-file");
+    o->feature_angle_given = angle->count() > 0;
     run = [o] { return run_remesh(*o); };
   });
 }

@@ -18,9 +18,15 @@ struct FeatureSettings {
   // `angle_deg` is a corner too. Boundary edges and non-manifold edges are features always.
   bool sharp_edges = true;
   double angle_deg = 60;
-  // Curves made of sharp edges only, shorter than this, are dropped: noise on scans, or details
-  // below the output's resolution (remesh sets it to the target edge length). 0: keep all.
-  double min_sharp_curve_length = 0;
+  // The output's target edge length, or 0 to keep every curve. Curves made of sharp edges only
+  // (no boundary, non-manifold or user edge) are dropped where they are not features at this
+  // scale: when shorter than twice it (details below the output's resolution, noise on scans),
+  // and, with `creases_at_scale`, when they do not fold by `angle_deg` between sides that are
+  // flat within this distance (a jagged fold of a coarse organic model or a noisy scan, whose
+  // tracing costs angles and topology; CAD creases have flat or gently curved sides). remesh
+  // sets it to its target edge length.
+  double scale = 0;
+  bool creases_at_scale = true;  // the CLI turns it off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.
   std::vector<Edge> user_edges;
 };

@@ -7,6 +7,7 @@
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
+#include "features/crease_at_scale.hpp"
 
 namespace cvtmesh {
 
@@ -187,17 +188,23 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
   f.edges.erase(std::unique(f.edges.begin(), f.edges.end()), f.edges.end());
 
   chain(mesh, cos_threshold, f);
-  if (settings.min_sharp_curve_length > 0) {
-    // Short curves of sharp edges only (no boundary, non-manifold or user edge) go, and the
-    // rest is chained again: a corner of a dropped curve may be an ordinary curve vertex now.
+  if (settings.scale > 0) {
+    // Curves of sharp edges only that are no features at the output's scale go, and the rest is
+    // chained again: a corner of a dropped curve may be an ordinary curve vertex now.
+    const CreaseScale creases(mesh, f.edges);
+    auto feature_at_scale = [&](const FeatureCurve& c) {
+      return curve_length(mesh, c) >= 2 * settings.scale &&
+             (!settings.creases_at_scale ||
+              creases.is_crease(c, settings.scale, settings.angle_deg));
+    };
     std::vector<Edge> dropped;
     for (const FeatureCurve& c : f.curves) {
-      if (curve_length(mesh, c) >= settings.min_sharp_curve_length) continue;
       std::vector<Edge> edges;
       for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
         edges.push_back(edge_of(c.vertices[k], c.vertices[k + 1]));
       if (c.closed) edges.push_back(edge_of(c.vertices.back(), c.vertices[0]));
-      if (std::all_of(edges.begin(), edges.end(), [&](const Edge& e) { return sharp_only(e); }))
+      if (std::all_of(edges.begin(), edges.end(), [&](const Edge& e) { return sharp_only(e); }) &&
+          !feature_at_scale(c))
         dropped.insert(dropped.end(), edges.begin(), edges.end());
     }
     if (!dropped.empty()) {

@@ -112,8 +112,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   ccvt_setup.run([&] {
     projector.emplace(mesh);
     FeatureSettings feature_settings = settings.features;
-    if (feature_settings.min_sharp_curve_length == 0)
-      feature_settings.min_sharp_curve_length = 2 * spacing;  // below the output's resolution
+    if (feature_settings.scale == 0) feature_settings.scale = spacing;
     result.features = detect_features(mesh, feature_settings);
     curves.emplace(mesh, result.features);
     result.input_topology = analyze_topology(mesh);  // what topology control compares with

@@ -1,0 +1,125 @@
+#include "features/crease_at_scale.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numbers>
+#include <unordered_set>
+
+namespace cvtmesh {
+
+namespace {
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t kMeasuredEdges = 9;  // per curve: enough for a vote, cheap on long curves
+
+Edge edge_of(Index a, Index b) {
+  return a < b ? Edge{a, b} : Edge{b, a};
+}
+
+Vec3 raw_normal(const TriangleMesh& mesh, std::size_t t) {
+  const auto [a, b, c] = mesh.corners(t);
+  return cross(b - a, c - a);
+}
+
+double angle_deg(const Vec3& u, const Vec3& v) {
+  const double lengths = norm(u) * norm(v);
+  if (!(lengths > 0)) return 0;
+  return std::acos(std::clamp(dot(u, v) / lengths, -1.0, 1.0)) * 180 / std::numbers::pi;
+}
+
+}  // namespace
+
+CreaseScale::CreaseScale(const TriangleMesh& mesh, const std::vector<Edge>& barrier)
+    : mesh_(mesh), across_(3 * mesh.triangles.size(), kNone) {
+  std::vector<Use>& uses = uses_;
+  uses.reserve(3 * mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      uses.push_back({edge_of(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), 3 * t + k});
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
+    return x.edge < y.edge || (x.edge == y.edge && x.corner < y.corner);
+  });
+  for (std::size_t k = 0; k < uses.size();) {
+    std::size_t end = k;
+    while (end < uses.size() && uses[end].edge == uses[k].edge) ++end;
+    if (end - k == 2 && !std::binary_search(barrier.begin(), barrier.end(), uses[k].edge)) {
+      across_[uses[k].corner] = uses[k + 1].corner / 3;
+      across_[uses[k + 1].corner] = uses[k].corner / 3;
+    }
+    k = end;
+  }
+}
+
+CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& centre,
+                                    double radius) const {
+  // Breadth-first over the triangles whose centroid is within `radius`, each normal turned to
+  // agree with its neighbour's across the shared edge (the input may not be oriented).
+  std::vector<std::pair<std::size_t, bool>> region{{first, flip}};
+  std::unordered_set<std::size_t> seen{first};
+  std::deque<std::pair<std::size_t, bool>> queue{{first, flip}};
+  while (!queue.empty()) {
+    const auto [t, flipped] = queue.front();
+    queue.pop_front();
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = across(t, k);
+      if (u == kNone || seen.contains(u)) continue;
+      const auto [a, b, c] = mesh_.corners(u);
+      if (distance((1.0 / 3) * (a + b + c), centre) > radius) continue;
+      // Consistent neighbours run their shared edge in opposite directions.
+      const Triangle& tt = mesh_.triangles[t];
+      const Index from = tt[k], to = tt[(k + 1) % 3];
+      const Triangle& uu = mesh_.triangles[u];
+      bool same_direction = false;
+      for (int j = 0; j < 3; ++j) same_direction |= uu[j] == from && uu[(j + 1) % 3] == to;
+      const bool f = flipped != same_direction;
+      seen.insert(u);
+      region.push_back({u, f});
+      queue.push_back({u, f});
+    }
+  }
+  Side s{{}, 0};
+  for (const auto& [t, f] : region)
+    s.normal_sum = s.normal_sum + (f ? -1.0 : 1.0) * raw_normal(mesh_, t);
+  double area = 0;
+  for (const auto& [t, f] : region) {
+    const Vec3 n = (f ? -1.0 : 1.0) * raw_normal(mesh_, t);
+    area += norm(n);
+    s.roughness_deg += norm(n) * angle_deg(n, s.normal_sum);
+  }
+  s.roughness_deg = area > 0 ? s.roughness_deg / area : 0;
+  return s;
+}
+
+CreaseScale::Measure CreaseScale::measure(const Edge& edge, double radius) const {
+  const auto first = std::lower_bound(uses_.begin(), uses_.end(), edge,
+                                      [](const Use& u, const Edge& e) { return u.edge < e; });
+  if (uses_.end() - first < 2 || first->edge != edge || first[1].edge != edge ||
+      (uses_.end() - first > 2 && first[2].edge == edge))
+    return {};  // not an edge of two triangles
+  const std::size_t t0 = first->corner / 3, t1 = first[1].corner / 3;
+  const auto k0 = static_cast<int>(first->corner % 3);
+  const Triangle& a = mesh_.triangles[t0];
+  const Triangle& b = mesh_.triangles[t1];
+  bool same_direction = false;
+  for (int j = 0; j < 3; ++j) same_direction |= b[j] == a[k0] && b[(j + 1) % 3] == a[(k0 + 1) % 3];
+  const Vec3 centre = 0.5 * (mesh_.vertices[edge[0]] + mesh_.vertices[edge[1]]);
+  const Side s0 = side(t0, false, centre, radius), s1 = side(t1, same_direction, centre, radius);
+  return {angle_deg(s0.normal_sum, s1.normal_sum), std::max(s0.roughness_deg, s1.roughness_deg)};
+}
+
+bool CreaseScale::is_crease(const FeatureCurve& curve, double scale, double angle_deg) const {
+  const std::size_t edges = curve.vertices.size() - (curve.closed ? 0 : 1);
+  const std::size_t measured = std::min(edges, kMeasuredEdges);
+  std::size_t passed = 0;
+  for (std::size_t i = 0; i < measured; ++i) {
+    const std::size_t k = (2 * i + 1) * edges / (2 * measured);  // spread along the curve
+    const Edge e = edge_of(curve.vertices[k], curve.vertices[(k + 1) % curve.vertices.size()]);
+    const Measure m = measure(e, scale);
+    passed += m.fold_deg >= angle_deg && m.roughness_deg <= angle_deg / 6;
+  }
+  return 2 * passed >= measured;
+}
+
+}  // namespace cvtmesh

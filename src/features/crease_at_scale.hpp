@@ -1,0 +1,54 @@
+// Whether a curve of sharp edges is still a crease at the output's resolution (issue 18: defaults
+// that never hurt). A dihedral angle measured between two input triangles says nothing about the
+// scale of the output: on a coarse organic model or a noisy scan, many edges fold by more than the
+// feature angle, but the surface around them bends as much within one output edge length, and
+// tracing them pins seeds to jagged curves that cost angles and topology. A crease of a CAD part
+// has flat (or gently curved) sides at that scale.
+#pragma once
+
+#include <vector>
+
+#include "cvtmesh/features.hpp"
+
+namespace cvtmesh {
+
+class CreaseScale {
+ public:
+  // `barrier`: sorted feature edges that the sides of a crease do not extend across.
+  CreaseScale(const TriangleMesh& mesh, const std::vector<Edge>& barrier);
+
+  // For an edge of exactly two triangles, the surface within `radius` of its midpoint on each
+  // side (reached across non-barrier edges): the angle between the two sides' area-weighted
+  // normals (the fold seen at that scale), and the sides' roughness, the larger of their
+  // area-weighted mean angles between a triangle's normal and its side's normal. Degrees.
+  struct Measure {
+    double fold_deg = 0;
+    double roughness_deg = 0;
+  };
+  Measure measure(const Edge& edge, double radius) const;
+
+  // A curve (its input vertex ids, closed or not) is a crease at `scale` when at least half of
+  // its measured edges (up to 9, spread along it) fold by at least `angle_deg` at that scale
+  // with sides rougher than a sixth of it (10° at the default 60°).
+  bool is_crease(const FeatureCurve& curve, double scale, double angle_deg) const;
+
+ private:
+  struct Side {
+    Vec3 normal_sum;  // area-weighted: the sum of the triangles' unnormalized normals
+    double roughness_deg;
+  };
+  Side side(std::size_t first, bool flip, const Vec3& centre, double radius) const;
+  // The triangle across t's edge k = (t[k], t[k+1]), or none for an edge of other than two
+  // triangles or on the barrier.
+  std::size_t across(std::size_t t, int k) const { return across_[3 * t + k]; }
+
+  struct Use {
+    Edge edge;
+    std::size_t corner;  // 3 t + k: triangle t's edge k
+  };
+  const TriangleMesh& mesh_;
+  std::vector<Use> uses_;  // sorted by edge
+  std::vector<std::size_t> across_;
+};
+
+}  // namespace cvtmesh
