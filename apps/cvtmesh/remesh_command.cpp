@@ -183,12 +183,12 @@ void add_remesh_command(CLI::App& app, Action& run) {
                 "Skip the report's Hausdorff distance (its JSON keys are null)");
   cmd->add_option("--polish-rounds", o->settings.polish_rounds,
                   "Rounds of local Lloyd steps around badly shaped triangles (0: none)")
-      ->default_val(3)
+      ->default_val(12)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,
                   "Rounds of topology control: seeds added where the output misses feature "
                   "edges or differs in topology; the best round is kept (0: none)")
-      ->default_val(3)
+      ->default_val(12)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--optimizer", o->optimizer, "lbfgs or lloyd")
       ->default_val("lbfgs")

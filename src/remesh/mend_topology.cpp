@@ -22,6 +22,9 @@ constexpr double kWellShapedFlipDeg = 30;
 // features are finer than the triangles, flips would make slivers by the dozen).
 constexpr double kSmallestFlipDeg = 15;
 
+// Rounds in a row whose output is no better than the best so far, after which the rounds stop.
+constexpr int kRoundsWithoutProgress = 4;
+
 // The links whose seeds are not joined by an edge of `rdt` (vertices: the seeds, by id).
 std::vector<FeatureLink> missing_links(const std::vector<FeatureLink>& links,
                                        const TriangleMesh& rdt) {
@@ -110,10 +113,12 @@ struct Assessment {
   TriangleMesh finished;  // all the flips made, and the tips closed
   std::vector<FeatureLink> missing;
   bool topology_kept = true;
+  OutputDefects defects;  // of `finished`, if its topology is not kept
   std::size_t links_flipped = 0, tips_closed = 0;
-  // Better outputs compare greater: the input's topology, then fewer non-manifold edges and
-  // vertices, then more corners, then fewer links missing, then the better worst triangle
-  // (Qmin: a seed that mends a link is worth it only if it leaves better triangles than a flip).
+  // Better outputs compare greater: the input's topology, then fewer triangles at defects
+  // (non-manifold edges and vertices, stray boundary edges, folds), then more corners, then fewer
+  // links missing, then the better worst triangle (Qmin: a seed that mends a link is worth it only
+  // if it leaves better triangles than a flip).
   std::tuple<bool, std::ptrdiff_t, std::size_t, std::ptrdiff_t, double> score;
 };
 
@@ -136,14 +141,16 @@ Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vect
   a.tips_closed = close_corner_tips(a.finished, constraints.corner_seed, unmade);
   const TopologyReport t = analyze_topology(a.finished);
   a.topology_kept = t.is_manifold() && same_topology(t, m.surface_topology);
+  if (!a.topology_kept)
+    a.defects = find_output_defects(a.finished, boundary_seeds(m, seeds, constraints, a.finished),
+                                    m.surface_topology.orientable);
   std::vector<bool> used(a.finished.vertices.size(), false);
   for (const Triangle& tri : a.finished.triangles)
     for (const Index v : tri) used[v] = true;
   const auto corners = static_cast<std::size_t>(std::count_if(constraints.corner_seed.begin(),
                                                               constraints.corner_seed.end(),
                                                               [&](Index s) { return used[s]; }));
-  a.score = {a.topology_kept,
-             -static_cast<std::ptrdiff_t>(t.nonmanifold_edges + t.nonmanifold_vertices), corners,
+  a.score = {a.topology_kept, -static_cast<std::ptrdiff_t>(a.defects.triangles.size()), corners,
              -static_cast<std::ptrdiff_t>(unmade.size()), measure_quality(a.finished).q_min};
   return a;
 }
@@ -169,23 +176,30 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     MendReport report;  // as of this round
   };
   std::optional<Round> best;
+  int since_best = 0;  // rounds since the best was found
   for (int round = 0;; ++round) {
     Assessment a = assess(m, output.mesh, seeds, constraints);
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.
     const std::vector<Index> vertex_seed = output.vertex_seed;
-    if (!best || !(a.score < best->assessment.score))
+    if (!best || !(a.score < best->assessment.score)) {
       best = Round{std::move(output), seeds, constraints, a, report};
+      since_best = 0;
+    } else {
+      ++since_best;
+    }
     std::size_t changed = 0;
-    if (round < rounds) {
+    // Refinement shrinks the defects' Delaunay balls round after round where the surface has a
+    // detail finer than the spacing; where the rounds only add defects (thin sheets whose
+    // boundaries the seeds cannot trace: ALSTOM_TEST4.off went from 483 to 5,736 stray boundary
+    // edges in 12 rounds), they stop.
+    if (round < rounds && since_best < kRoundsWithoutProgress) {
       // Where the output shows a defect, from the seeds as extracted (one RVD for both): a seed in
       // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
       // its dual Voronoi edge crosses the surface (Delaunay refinement).
       DefectSeeds found;
       if (!a.topology_kept) {
-        const OutputDefects defects =
-            find_output_defects(a.finished, boundary_seeds(m, seeds, constraints, a.finished),
-                                m.surface_topology.orientable);
+        const OutputDefects& defects = a.defects;
         std::vector<Triangle> dual;  // the defects' triangles, in seeds
         for (Triangle t : defects.triangles) {
           for (Index& v : t) v = vertex_seed[v];
