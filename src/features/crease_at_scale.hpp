@@ -29,7 +29,7 @@ class CreaseScale {
 
   // A curve (its input vertex ids, closed or not) is a crease at `scale` when at least half of
   // its measured edges (up to 9, spread along it) fold by at least `angle_deg` at that scale
-  // with sides rougher than a sixth of it (10° at the default 60°).
+  // with sides no rougher than a sixth of it (10° at the default 60°).
   bool is_crease(const FeatureCurve& curve, double scale, double angle_deg) const;
 
  private:
