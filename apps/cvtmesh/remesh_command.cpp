@@ -183,7 +183,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
                 "Skip the report's Hausdorff distance (its JSON keys are null)");
   cmd->add_option("--polish-rounds", o->settings.polish_rounds,
                   "Rounds of local Lloyd steps around badly shaped triangles (0: none)")
-      ->default_val(12)
+      ->default_val(3)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,
                   "Rounds of topology control: seeds added where the output misses feature "

@@ -41,7 +41,7 @@ struct RemeshSettings {
   int polish_rounds = 3;
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
-  // The best output of all the rounds is kept; they stop early after 3 rounds in a row that
+  // The best output of all the rounds is kept; they stop early after 4 rounds in a row that
   // found nothing better. 0 turns the rounds off.
   int topology_rounds = 12;
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output

@@ -79,12 +79,14 @@ CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& ce
       queue.push_back({u, f});
     }
   }
+  std::vector<Vec3> normals;  // oriented, area-weighted
   Side s{{}, 0};
-  for (const auto& [t, f] : region)
-    s.normal_sum = s.normal_sum + (f ? -1.0 : 1.0) * raw_normal(mesh_, t);
-  double area = 0;
   for (const auto& [t, f] : region) {
-    const Vec3 n = (f ? -1.0 : 1.0) * raw_normal(mesh_, t);
+    normals.push_back((f ? -1.0 : 1.0) * raw_normal(mesh_, t));
+    s.normal_sum = s.normal_sum + normals.back();
+  }
+  double area = 0;
+  for (const Vec3& n : normals) {
     area += norm(n);
     s.roughness_deg += norm(n) * angle_deg(n, s.normal_sum);
   }
