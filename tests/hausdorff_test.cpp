@@ -42,6 +42,20 @@ TEST(Hausdorff, DisplacedBumpIsSeenFromTheReferenceSide) {
   EXPECT_NEAR(h.max, 0.3, 1e-12);
 }
 
+TEST(Hausdorff, FarVertexAmongManyIsFound) {
+  // The vertices count for the max only, and most are not searched for (their distance to the
+  // previous foot's triangle is within the max so far): one lifted vertex among thousands, in
+  // the middle of the list, must still be found, exactly.
+  const TriangleMesh flat = disk(60, 64);
+  ASSERT_GT(flat.vertices.size(), 3000u);
+  TriangleMesh bumped = flat;
+  const std::size_t apex = flat.vertices.size() / 2 + 7;
+  bumped.vertices[apex].z = 0.125;
+  const HausdorffReport h = hausdorff_distance(bumped, flat, {.samples = 100});
+  EXPECT_NEAR(h.a_to_b.max, 0.125, 1e-12);
+  EXPECT_NEAR(h.max, 0.125, 1e-12);
+}
+
 TEST(Hausdorff, ResultDoesNotDependOnThreadCount) {
   const TriangleMesh a = icosphere(3), b = transformed(torus(1, 0.4, 32, 16), 1.0, {0.1, 0, 0});
   HausdorffReport one, all;

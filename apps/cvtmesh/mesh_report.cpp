@@ -85,7 +85,7 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
 }
 
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
-                       const TriangleMesh* reference, std::size_t hausdorff_samples,
+                       const TriangleMesh* reference, const HausdorffReport* distance,
                        const TopologyReport* reference_topology) {
   MeshReport r;
   r.topology = analyze_topology(mesh);
@@ -95,16 +95,9 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
   if (reference) {
     const TopologyReport ref_topology =
         reference_topology ? *reference_topology : analyze_topology(*reference);
-    std::optional<HausdorffReport> distance;
-    if (hausdorff_samples != kNoHausdorff) {
-      HausdorffSettings settings;
-      settings.samples = hausdorff_samples;
-      distance = hausdorff_distance(mesh, *reference, settings);
-    }
-    const HausdorffReport* measured = distance ? &*distance : nullptr;
     r.same_topology_as_reference = same_topology(r.topology, ref_topology);
-    add_reference_json(r.json, measured, ref_topology, r.same_topology_as_reference);
-    r.text += hausdorff_lines(measured, r.topology, ref_topology);
+    add_reference_json(r.json, distance, ref_topology, r.same_topology_as_reference);
+    r.text += hausdorff_lines(distance, r.topology, ref_topology);
   }
   return r;
 }

@@ -24,7 +24,8 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
                             const TopologyReport& reference);
 
 // The full report of a mesh: counts, topology and quality, plus, against a reference, the
-// Hausdorff distance (unless hausdorff_samples is kNoHausdorff) and the topology comparison.
+// Hausdorff distance (when measured: `distance`, of `mesh` against `reference`) and the topology
+// comparison.
 // JSON and text carry the same figures.
 struct MeshReport {
   TopologyReport topology;
@@ -32,10 +33,9 @@ struct MeshReport {
   nlohmann::ordered_json json;
   std::string text;
 };
-inline constexpr std::size_t kNoHausdorff = static_cast<std::size_t>(-1);
 // `reference_topology`: the reference's, when the caller has it already (else computed here).
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
-                       const TriangleMesh* reference, std::size_t hausdorff_samples = 0,
+                       const TriangleMesh* reference, const HausdorffReport* distance = nullptr,
                        const TopologyReport* reference_topology = nullptr);
 
 // Non-fatal facts a user should hear about (non-manifold, several components, ...), one line

@@ -34,7 +34,10 @@ int run_quality(const QualityOptions& o) {
   note_possible_repairs(o.mesh, mesh);
   std::optional<TriangleMesh> reference;
   if (!o.reference.empty()) reference = read_mesh(o.reference);
-  const MeshReport report = report_mesh(o.mesh, mesh, reference ? &*reference : nullptr, o.samples);
+  std::optional<HausdorffReport> distance;
+  if (reference) distance = hausdorff_distance(mesh, *reference, {.samples = o.samples});
+  const MeshReport report =
+      report_mesh(o.mesh, mesh, reference ? &*reference : nullptr, distance ? &*distance : nullptr);
   warn_about_topology(o.mesh, report.topology);
   fmt::print("{}", o.json ? report.json.dump(2) + "\n" : report.text);
   return kOk;

@@ -20,10 +20,11 @@ namespace cvtmesh::cli {
 
 namespace {
 
-// Hausdorff samples per surface of the report: fewer than `quality`'s default on big inputs (2
-// per input face); the mean is as accurate, and the report takes a fraction of the remeshing
-// time instead of as much.
-constexpr std::size_t kReportSamples = 200'000;
+// Hausdorff samples per surface of the report, besides every vertex of both meshes: the mean's
+// sampling error is about 1% (0.0990% against 0.0986% with 200k samples on eight.off at 1k
+// vertices), and the report costs under a tenth of the remesh instead of as much as it.
+// `quality --ref` measures densely.
+constexpr std::size_t kReportSamples = 20'000;
 
 struct RemeshOptions {
   std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges, seeds_file;
@@ -75,11 +76,12 @@ int run_remesh(RemeshOptions o) {
                  p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds);
     };
   }
+  if (!o.no_hausdorff) s.hausdorff = HausdorffSettings{.samples = o.samples};
   const RemeshResult r = remesh(input, s);
   write_mesh(o.output, r.mesh);
 
-  MeshReport report = report_mesh(o.output, r.mesh, &input,
-                                  o.no_hausdorff ? kNoHausdorff : o.samples, &r.input_topology);
+  MeshReport report = report_mesh(o.output, r.mesh, &input, r.hausdorff ? &*r.hausdorff : nullptr,
+                                  &r.input_topology);
   const double diagonal = bounding_box(input).diagonal();
   const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
   const std::size_t corners_out = corners_kept(input, r.features, r.mesh);
@@ -176,8 +178,9 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--samples", o->samples,
-                  "Hausdorff samples per surface for the report (0 = as `quality`)")
+  cmd->add_option(
+         "--samples", o->samples,
+         "Hausdorff samples per surface for the report, besides all vertices (0 = as `quality`)")
       ->default_val(kReportSamples);
   cmd->add_flag("--no-hausdorff", o->no_hausdorff,
                 "Skip the report's Hausdorff distance (its JSON keys are null)");

@@ -6,10 +6,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cvtmesh/features.hpp"
+#include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/mesh.hpp"
 #include "cvtmesh/topology.hpp"
 
@@ -47,6 +49,9 @@ struct RemeshSettings {
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
   // vertices, feature curves chains of output edges. Not applied with mode rcvt.
   FeatureSettings features;
+  // The report's two-sided Hausdorff distance between output and input (RemeshResult::hausdorff),
+  // measured with the AABB tree the remesher built anyway; unset: not measured.
+  std::optional<HausdorffSettings> hausdorff;
 };
 
 struct RemeshResult {
@@ -87,6 +92,8 @@ struct RemeshResult {
   // a hole: when this is not 0 the output's topology differs from the input's.
   std::size_t triangles_removed = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it
+  // Output (a) against input (b), when RemeshSettings::hausdorff asks for it.
+  std::optional<HausdorffReport> hausdorff;
 };
 
 // The number of vertices the settings ask for: `vertices`, or the count whose equilateral

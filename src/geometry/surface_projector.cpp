@@ -78,4 +78,8 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint
       tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z), start));
 }
 
+double SurfaceProjector::squared_distance_to(const Vec3& p, std::size_t triangle) const {
+  return CGAL::squared_distance(Kernel::Point_3(p.x, p.y, p.z), tree_->triangles[triangle]);
+}
+
 }  // namespace cvtmesh

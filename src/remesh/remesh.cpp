@@ -15,6 +15,7 @@
 #include "cvtmesh/sampling.hpp"
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
+#include "quality/hausdorff_with_tree.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
 
@@ -203,6 +204,8 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     result.feature_edges_missing = wanted.size() - result.feature_edges.size();
   }
   result.seconds_extraction = seconds(extraction_start);
+  if (settings.hausdorff && !result.mesh.triangles.empty())
+    result.hausdorff = hausdorff_distance(result.mesh, mesh, *projector, *settings.hausdorff);
   return result;
 }
 
