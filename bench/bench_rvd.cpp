@@ -6,6 +6,10 @@
 //     rvd_s and rvd_over_delaunay.
 //   BM_RvdLargeMesh/T: ../shared/data/igea.ply (268,686 faces), 10k seeds, T threads; counter
 //     rvd_s, and exact_fallback_pct of the predicates.
+//   BM_RvdShuffledInput: igea's vertices and triangles shuffled, 10k seeds, 1 thread: an RVD pass
+//     on the file's order (stored_s), on the shuffled copy (shuffled_s), and on the shuffled copy
+//     sorted by spatially_sorted, the sort included (sorted_s); sorted_over_stored is the
+//     order-independence figure (issue 19: at most 1.15).
 //   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
 //     compares to random seeds on the same mesh (exact_fallback_pct, ties).
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -102,6 +106,31 @@ BENCHMARK(BM_RvdLargeMesh)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+void BM_RvdShuffledInput(benchmark::State& state) {
+  const auto path = testing::shared_data() / "igea.ply";
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("igea.ply not found (set CVTMESH_SHARED_DATA)");
+    return;
+  }
+  const TriangleMesh stored = read_mesh(path), mixed = testing::shuffled(stored, 7);
+  const auto seeds = sample_surface(stored, 10'000, 1);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  for (auto _ : state) {
+    const Pass as_stored = rvd_pass(stored, seeds), as_shuffled = rvd_pass(mixed, seeds);
+    const auto start = Clock::now();
+    const SpatiallySorted sorted = spatially_sorted(mixed);
+    const double sort_s = seconds(start);
+    const Pass after_sort = rvd_pass(sorted.mesh, seeds);
+    state.SetIterationTime(as_stored.rvd_s + as_shuffled.rvd_s + sort_s + after_sort.rvd_s);
+    state.counters["stored_s"] = as_stored.rvd_s;
+    state.counters["shuffled_s"] = as_shuffled.rvd_s;
+    state.counters["sort_s"] = sort_s;
+    state.counters["sorted_s"] = sort_s + after_sort.rvd_s;
+    state.counters["sorted_over_stored"] = (sort_s + after_sort.rvd_s) / as_stored.rvd_s;
+  }
+}
+BENCHMARK(BM_RvdShuffledInput)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_RvdDegenerate(benchmark::State& state) {
   const TriangleMesh mesh = testing::cube(40);  // 19,200 faces, 9,602 grid vertices

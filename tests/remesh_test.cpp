@@ -60,8 +60,10 @@ TEST(Remesh, ReportsTheHausdorffDistanceWhenAsked) {
   const RemeshResult r = remesh(input, s);
   ASSERT_TRUE(r.hausdorff);
   const HausdorffReport alone = hausdorff_distance(r.mesh, input, {.samples = 5000});
-  EXPECT_EQ(r.hausdorff->max, alone.max);
-  EXPECT_EQ(r.hausdorff->mean, alone.mean);
+  // The remesher's tree holds the input's triangles in its own order: the same distances, up
+  // to the rounding of the projections.
+  EXPECT_NEAR(r.hausdorff->max, alone.max, 1e-12);
+  EXPECT_NEAR(r.hausdorff->mean, alone.mean, 1e-12);
   EXPECT_EQ(r.hausdorff->samples_per_surface, 5000u);
   EXPECT_GT(r.hausdorff->mean, 0);
 }

@@ -34,4 +34,15 @@ BoundingBox bounding_box(const TriangleMesh& mesh);
 double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c);
 double surface_area(const TriangleMesh& mesh);
 
+// The same surface with its vertices in Morton order, and its triangles in the Morton order of
+// their centroids, each turned (orientation kept) to start at its smallest vertex id. The RVD's
+// walks go from each vertex's cell to the next's and from triangle to triangle: on a file in no
+// spatial order, an RVD pass is up to 10x slower (igea shuffled). A permutation of the same
+// vertices and triangles gives the same sorted mesh (unless two vertices coincide).
+struct SpatiallySorted {
+  TriangleMesh mesh;
+  std::vector<Index> new_id;  // per vertex id of the given mesh, its id in `mesh`
+};
+SpatiallySorted spatially_sorted(const TriangleMesh& mesh);
+
 }  // namespace cvtmesh

@@ -1,6 +1,5 @@
-// An order of points along a Hilbert curve (CGAL's hilbert_sort, median policy): points near in
-// the order are near in space. Queries run in this order can start each search from the previous
-// answer; it is deterministic (no shuffling).
+// Orders of points along a Morton (Z-order) curve: points near in the order are near in space,
+// so a walk or a search that starts from the previous answer stays short.
 #pragma once
 
 #include <vector>
@@ -9,7 +8,9 @@
 
 namespace cvtmesh {
 
-// Indices of `points`, in Hilbert order.
+// Indices of `points` in Morton order of their bounding cube (21 bits per axis), ties broken by
+// the coordinates, then the index: the same set of distinct points gives the same order
+// whatever order it comes in.
 std::vector<Index> spatial_order(const std::vector<Vec3>& points);
 
 }  // namespace cvtmesh

@@ -7,7 +7,7 @@
 
 namespace cvtmesh {
 
-// `to_b` must have been built from `b`.
+// `to_b` must have been built from `b`, or from the same triangles in another order.
 HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
                                    const SurfaceProjector& to_b, const HausdorffSettings& settings);
 

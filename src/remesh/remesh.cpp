@@ -15,6 +15,7 @@
 #include "cvtmesh/sampling.hpp"
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
+#include "features/renumber_features.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
@@ -89,7 +90,7 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
   return static_cast<std::size_t>(count);
 }
 
-RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
+RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   const auto start = Clock::now();
   if (settings.iterations < 0) throw InvalidArgument("the iteration cap must not be negative");
   if (settings.polish_rounds < 0)
@@ -98,8 +99,13 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     throw InvalidArgument("the number of topology control rounds must not be negative");
   if (!(settings.gradient_tolerance > 0))
     throw InvalidArgument("the gradient tolerance must be positive");
-  if (!(surface_area(mesh) > 0)) throw InputError("the surface has no area");
+  if (!(surface_area(input) > 0)) throw InputError("the surface has no area");
+  // Everything below works on the input in spatial order (issue 19: RVD walks on a file in no
+  // spatial order are up to 10x longer); the features are reported in the caller's ids.
+  const SpatiallySorted sorted = spatially_sorted(input);
+  const TriangleMesh& mesh = sorted.mesh;
   RemeshResult result;
+  Features features;  // result.features, in the ids of `mesh`
   std::vector<Vec3> seeds =
       settings.initial_seeds.empty()
           ? sample_surface(mesh, requested_vertex_count(mesh, settings), settings.seed)
@@ -114,8 +120,9 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     projector.emplace(mesh);
     FeatureSettings feature_settings = settings.features;
     if (feature_settings.scale == 0) feature_settings.scale = spacing;
-    result.features = detect_features(mesh, feature_settings);
-    curves.emplace(mesh, result.features);
+    result.features = detect_features(input, feature_settings);
+    features = renumbered(result.features, sorted.new_id);
+    curves.emplace(mesh, features);
     result.input_topology = analyze_topology(mesh);  // what topology control compares with
   });
   SeedConstraints constraints;
@@ -146,8 +153,8 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   if (settings.mode != CvtMode::rcvt) {
     // The paper's two stages (§4.3): the RCVT spread the seeds; the nearest to the features now
     // move onto them, and CCVT optimizes with them bound there.
-    if (!result.features.empty())
-      constraints = place_feature_seeds(seeds, mesh, result.features, *curves, spacing);
+    if (!features.empty())
+      constraints = place_feature_seeds(seeds, mesh, features, *curves, spacing);
     run_phase("ccvt", &constraints, result.seconds_ccvt);
     // Surface seeds that took over a stretch of a curve join it, and CCVT resumes. Then the curve
     // seeds even out along their curves and the surface seeds relax around them, held there;
@@ -175,7 +182,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   result.defects_polished = output.defects;
   // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
   const MendContext context{
-      mesh,    result.input_topology,   result.features, *curves, *projector, placement,
+      mesh,    result.input_topology,   features, *curves, *projector, placement,
       spacing, {settings.polish_rounds}};
   MendReport mends;
   output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
@@ -194,8 +201,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
     result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   if (!constraints.empty()) {
-    const std::vector<FeatureLink> links =
-        feature_links(seeds, constraints, result.features, *curves);
+    const std::vector<FeatureLink> links = feature_links(seeds, constraints, features, *curves);
     result.feature_edges = traced_edges(links, seeds, result.mesh);
     std::vector<Edge> wanted;
     for (const FeatureLink& link : links) wanted.push_back(link.seeds);
@@ -205,7 +211,7 @@ RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings) {
   }
   result.seconds_extraction = seconds(extraction_start);
   if (settings.hausdorff && !result.mesh.triangles.empty())
-    result.hausdorff = hausdorff_distance(result.mesh, mesh, *projector, *settings.hausdorff);
+    result.hausdorff = hausdorff_distance(result.mesh, input, *projector, *settings.hausdorff);
   return result;
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <numeric>
+#include <random>
 
 #include "cvtmesh/repair.hpp"
 
@@ -182,6 +184,22 @@ TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b) {
 TriangleMesh transformed(TriangleMesh mesh, double scale, const Vec3& offset) {
   for (Vec3& v : mesh.vertices) v = scale * v + offset;
   return mesh;
+}
+
+TriangleMesh shuffled(const TriangleMesh& mesh, std::uint64_t seed, std::vector<Index>* new_id) {
+  std::mt19937_64 random(seed);
+  std::vector<Index> id(mesh.vertices.size());
+  std::iota(id.begin(), id.end(), Index{0});
+  std::shuffle(id.begin(), id.end(), random);
+  TriangleMesh out;
+  out.vertices.resize(mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) out.vertices[id[v]] = mesh.vertices[v];
+  out.triangles = mesh.triangles;
+  for (Triangle& t : out.triangles)
+    for (Index& v : t) v = id[v];
+  std::shuffle(out.triangles.begin(), out.triangles.end(), random);
+  if (new_id) *new_id = std::move(id);
+  return out;
 }
 
 }  // namespace cvtmesh::testing

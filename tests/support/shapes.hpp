@@ -1,6 +1,9 @@
 // Meshes generated in code, so core tests and benchmarks run without any data files.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh::testing {
@@ -32,5 +35,10 @@ TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b);
 
 // `mesh` with every vertex moved by `offset` and scaled by `scale` about the origin first.
 TriangleMesh transformed(TriangleMesh mesh, double scale, const Vec3& offset = {});
+
+// The same surface with its vertex ids and its triangles in a random order (fixed by `seed`);
+// `new_id[v]`, if given, receives each vertex's new id.
+TriangleMesh shuffled(const TriangleMesh& mesh, std::uint64_t seed,
+                      std::vector<Index>* new_id = nullptr);
 
 }  // namespace cvtmesh::testing
