@@ -238,6 +238,7 @@ def main():
         sys.exit("corpus.py: some outputs are not manifold, or some runs failed (rows above)")
     if use_vorpalite:
         better, both, ratios = 0, 0, []
+        shape_lost, kept_shape, better_kept = 0, 0, 0
         for (name, n, tool), r in results.items():
             if tool != "cvtmesh" or "error" in r:
                 continue
@@ -247,7 +248,16 @@ def main():
             ratios.append(r["time"] / max(v["time"], 1e-9))
             if v["same_topology"] and v["manifold"]:
                 both += 1
-                better += r["theta_min"] >= v["theta_min"] and r["q_min"] >= v["q_min"]
+                wins = r["theta_min"] >= v["theta_min"] and r["q_min"] >= v["q_min"]
+                better += wins
+                # vorpalite's scan profile keeps the topology of a thin part by deleting it
+                # (cow.off at 1k: 11 small components, 161 facets removed; Hausdorff max 9.9%).
+                if v["hd_max"] is not None and r["hd_max"] is not None and \
+                        v["hd_max"] > max(2 * r["hd_max"], 2.0):
+                    shape_lost += 1
+                else:
+                    kept_shape += 1
+                    better_kept += wins
         vs = [r for (_, _, tool), r in results.items() if tool == "vorpalite"]
         vok = [r for r in vs if "error" not in r]
         ratios.sort()
@@ -257,6 +267,9 @@ def main():
         if both:
             print(f"where vorpalite keeps topology: cvtmesh θmin and Qmin at least vorpalite's on "
                   f"{better}/{both} runs")
+            print(f"  of those, vorpalite lost parts of the shape on {shape_lost} (its Hausdorff "
+                  f"max over 2% and twice cvtmesh's); on the other {kept_shape}, cvtmesh θmin and "
+                  f"Qmin at least vorpalite's on {better_kept}")
         if ratios:
             print(f"time ratio cvtmesh / vorpalite: median {ratios[len(ratios) // 2]:.2f}")
 
