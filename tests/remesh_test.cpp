@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
+
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/io.hpp"
@@ -141,6 +143,48 @@ TEST(Remesh, SizeSettingsAreValidated) {
   EXPECT_NEAR(static_cast<double>(requested_vertex_count(m, s)), expected, 1.0);
   s.edge_length_rel = 0.05;
   EXPECT_THROW(requested_vertex_count(m, s), InvalidArgument);  // two sizes
+}
+
+}  // namespace
+}  // namespace cvtmesh
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+// Issue 22: the same shape in any units. A torus scaled by 2^k is remeshed exactly as the
+// unscaled one, up to that scale, bit for bit: the remesher works on the input scaled by a
+// power of two to unit size, which is exact. An edge length in input units scales with it.
+TEST(RemeshScale, AShapeScaledByAPowerOfTwoGivesTheSameOutputScaled) {
+  const TriangleMesh shape = torus(1, 0.4, 48, 20);
+  RemeshSettings s;
+  s.edge_length = 0.25;
+  s.hausdorff = HausdorffSettings{.samples = 2000};
+  const RemeshResult unit = remesh(shape, s);
+  ASSERT_GT(unit.mesh.vertices.size(), 100u);
+  for (const int k : {-600, -20, 20, 600}) {
+    TriangleMesh scaled = shape;
+    for (Vec3& v : scaled.vertices)
+      v = {std::ldexp(v.x, k), std::ldexp(v.y, k), std::ldexp(v.z, k)};
+    RemeshSettings sk = s;
+    sk.edge_length = std::ldexp(s.edge_length, k);
+    const RemeshResult r = remesh(scaled, sk);
+    ASSERT_EQ(r.mesh.vertices.size(), unit.mesh.vertices.size()) << "2^" << k;
+    EXPECT_EQ(r.mesh.triangles, unit.mesh.triangles) << "2^" << k;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < r.mesh.vertices.size(); ++i) {
+      const Vec3& a = r.mesh.vertices[i];
+      const Vec3& b = unit.mesh.vertices[i];
+      differing += a != Vec3{std::ldexp(b.x, k), std::ldexp(b.y, k), std::ldexp(b.z, k)};
+    }
+    EXPECT_EQ(differing, 0u) << "2^" << k;
+    const QualityReport q = measure_quality(r.mesh);
+    EXPECT_EQ(q.q_min, measure_quality(unit.mesh).q_min) << "2^" << k;
+    ASSERT_TRUE(r.hausdorff);
+    EXPECT_EQ(r.hausdorff->max_pct(), unit.hausdorff->max_pct()) << "2^" << k;
+    EXPECT_EQ(r.hausdorff->max, std::ldexp(unit.hausdorff->max, k)) << "2^" << k;
+  }
 }
 
 }  // namespace

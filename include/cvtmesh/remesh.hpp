@@ -61,6 +61,8 @@ struct RemeshResult {
   TriangleMesh mesh;
   int iterations = 0;       // over all phases
   int rvd_evaluations = 0;  // RVD computations (energy + gradient evaluations)
+  // Of the input scaled by a power of two to about unit size (the remesher works on that
+  // exact copy, so that any units give the same output up to the scale).
   double energy_initial = 0, energy_final = 0;
   double gradient_norm_initial = 0, gradient_norm_final = 0;
   // The AABB tree and the features, needed from CCVT on, are built while RCVT runs: their time

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "cvtmesh/quality.hpp"
+#include "geometry/unit_scale.hpp"
 
 namespace cvtmesh {
 
@@ -32,7 +33,13 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   return {q, std::min({alpha, beta, gamma}), std::max({alpha, beta, gamma})};
 }
 
-QualityReport measure_quality(const TriangleMesh& mesh) {
+QualityReport measure_quality(const TriangleMesh& given) {
+  // Measured at about unit size, exactly scaled (issue 22): the areas of a mesh in nanometres
+  // would underflow. Shapes do not depend on the scale; edge lengths are scaled back.
+  const int exponent = size_exponent(given);
+  TriangleMesh unit;
+  if (exponent != 0) unit = scaled_by_power_of_two(given, -exponent);
+  const TriangleMesh& mesh = exponent != 0 ? unit : given;
   QualityReport r;
   r.triangles = mesh.triangles.size();
   if (r.triangles == 0) return r;
@@ -71,6 +78,8 @@ QualityReport measure_quality(const TriangleMesh& mesh) {
   double sum_sq = 0;
   for (double l : lengths) sum_sq += (l - r.edge_length_mean) * (l - r.edge_length_mean);
   r.edge_length_std = std::sqrt(sum_sq / static_cast<double>(lengths.size()));
+  r.edge_length_mean = std::ldexp(r.edge_length_mean, exponent);
+  r.edge_length_std = std::ldexp(r.edge_length_std, exponent);
   return r;
 }
 

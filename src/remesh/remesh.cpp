@@ -16,6 +16,7 @@
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
+#include "geometry/unit_scale.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
@@ -66,9 +67,8 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
   return traced;
 }
 
-}  // namespace
-
-std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
+// requested_vertex_count for a mesh of about unit size (see geometry/unit_scale.hpp).
+std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
   const int given = (s.vertices > 0) + (s.edge_length != 0) + (s.edge_length_rel != 0);
   if (given != 1)
     throw InvalidArgument(
@@ -90,7 +90,8 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
   return static_cast<std::size_t>(count);
 }
 
-RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
+// The remesher proper, on a mesh of about unit size.
+RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settings) {
   const auto start = Clock::now();
   if (settings.iterations < 0) throw InvalidArgument("the iteration cap must not be negative");
   if (settings.polish_rounds < 0)
@@ -108,7 +109,7 @@ RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   Features features;  // result.features, in the ids of `mesh`
   std::vector<Vec3> seeds =
       settings.initial_seeds.empty()
-          ? sample_surface(mesh, requested_vertex_count(mesh, settings), settings.seed)
+          ? sample_surface(mesh, unit_vertex_count(mesh, settings), settings.seed)
           : settings.initial_seeds;
   const double spacing = edge_length_for(surface_area(mesh), seeds.size());
   // What only CCVT needs (the AABB tree, the features: 0.45 s on igea's 270k triangles, all
@@ -213,6 +214,41 @@ RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   if (settings.hausdorff && !result.mesh.triangles.empty())
     result.hausdorff = hausdorff_distance(result.mesh, input, *projector, *settings.hausdorff);
   return result;
+}
+
+// Settings in the units of a mesh scaled by 2^exponent.
+RemeshSettings scaled_settings(RemeshSettings s, int exponent) {
+  s.edge_length = std::ldexp(s.edge_length, exponent);
+  s.features.scale = std::ldexp(s.features.scale, exponent);
+  for (Vec3& p : s.initial_seeds)
+    p = {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent), std::ldexp(p.z, exponent)};
+  return s;
+}
+
+}  // namespace
+
+std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
+  const int exponent = size_exponent(mesh);
+  if (exponent == 0) return unit_vertex_count(mesh, s);
+  return unit_vertex_count(scaled_by_power_of_two(mesh, -exponent), scaled_settings(s, -exponent));
+}
+
+RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
+  // Issue 22: the work is done on the input scaled by a power of two to about unit size, and
+  // the output scaled back, both exactly; a shape in any units gives the same output up to the
+  // scale.
+  const int exponent = size_exponent(input);
+  if (exponent == 0) return remesh_unit(input, settings);
+  RemeshResult r =
+      remesh_unit(scaled_by_power_of_two(input, -exponent), scaled_settings(settings, -exponent));
+  r.mesh = scaled_by_power_of_two(std::move(r.mesh), exponent);
+  if (r.hausdorff) {
+    HausdorffReport& h = *r.hausdorff;
+    for (double* d : {&h.a_to_b.max, &h.a_to_b.mean, &h.a_to_b.rms, &h.b_to_a.max, &h.b_to_a.mean,
+                      &h.b_to_a.rms, &h.max, &h.mean, &h.rms, &h.reference_diagonal})
+      *d = std::ldexp(*d, exponent);
+  }
+  return r;
 }
 
 }  // namespace cvtmesh
