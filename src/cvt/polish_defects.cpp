@@ -208,7 +208,7 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
   std::vector<Index> moving;
   for (int round = 0;; ++round) {
     const RestrictedVoronoiDiagram rvd(surface, seeds);
-    MultiNerveBuilder rdt(rvd, surface);
+    MultiNerveBuilder rdt(rvd);
     CellCoverage coverage;
     PolygonSink* sinks[] = {&rdt, &coverage};
     rvd.traverse(sinks);

@@ -14,10 +14,6 @@ namespace {
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 constexpr std::size_t kMeasuredEdges = 9;  // per curve: enough for a vote, cheap on long curves
 
-Edge edge_of(Index a, Index b) {
-  return a < b ? Edge{a, b} : Edge{b, a};
-}
-
 Vec3 raw_normal(const TriangleMesh& mesh, std::size_t t) {
   const auto [a, b, c] = mesh.corners(t);
   return cross(b - a, c - a);
@@ -31,16 +27,9 @@ double angle_deg(const Vec3& u, const Vec3& v) {
 
 }  // namespace
 
-CreaseScale::CreaseScale(const TriangleMesh& mesh, const std::vector<Edge>& barrier)
-    : mesh_(mesh), across_(3 * mesh.triangles.size(), kNone) {
-  std::vector<Use>& uses = uses_;
-  uses.reserve(3 * mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      uses.push_back({edge_of(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), 3 * t + k});
-  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
-    return x.edge < y.edge || (x.edge == y.edge && x.corner < y.corner);
-  });
+CreaseScale::CreaseScale(const TriangleMesh& mesh, const std::vector<EdgeUse>& uses,
+                         const std::vector<Edge>& barrier)
+    : mesh_(mesh), uses_(uses), across_(3 * mesh.triangles.size(), kNone) {
   for (std::size_t k = 0; k < uses.size();) {
     std::size_t end = k;
     while (end < uses.size() && uses[end].edge == uses[k].edge) ++end;
@@ -69,11 +58,7 @@ CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& ce
       if (distance((1.0 / 3) * (a + b + c), centre) > radius) continue;
       // Consistent neighbours run their shared edge in opposite directions.
       const Triangle& tt = mesh_.triangles[t];
-      const Index from = tt[k], to = tt[(k + 1) % 3];
-      const Triangle& uu = mesh_.triangles[u];
-      bool same_direction = false;
-      for (int j = 0; j < 3; ++j) same_direction |= uu[j] == from && uu[(j + 1) % 3] == to;
-      const bool f = flipped != same_direction;
+      const bool f = flipped != runs_forward(mesh_.triangles[u], tt[k], tt[(k + 1) % 3]);
       seen.insert(u);
       region.push_back({u, f});
       queue.push_back({u, f});
@@ -96,16 +81,14 @@ CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& ce
 
 CreaseScale::Measure CreaseScale::measure(const Edge& edge, double radius) const {
   const auto first = std::lower_bound(uses_.begin(), uses_.end(), edge,
-                                      [](const Use& u, const Edge& e) { return u.edge < e; });
+                                      [](const EdgeUse& u, const Edge& e) { return u.edge < e; });
   if (uses_.end() - first < 2 || first->edge != edge || first[1].edge != edge ||
       (uses_.end() - first > 2 && first[2].edge == edge))
     return {};  // not an edge of two triangles
   const std::size_t t0 = first->corner / 3, t1 = first[1].corner / 3;
   const auto k0 = static_cast<int>(first->corner % 3);
   const Triangle& a = mesh_.triangles[t0];
-  const Triangle& b = mesh_.triangles[t1];
-  bool same_direction = false;
-  for (int j = 0; j < 3; ++j) same_direction |= b[j] == a[k0] && b[(j + 1) % 3] == a[(k0 + 1) % 3];
+  const bool same_direction = runs_forward(mesh_.triangles[t1], a[k0], a[(k0 + 1) % 3]);
   const Vec3 centre = 0.5 * (mesh_.vertices[edge[0]] + mesh_.vertices[edge[1]]);
   const Side s0 = side(t0, false, centre, radius), s1 = side(t1, same_direction, centre, radius);
   return {angle_deg(s0.normal_sum, s1.normal_sum), std::max(s0.roughness_deg, s1.roughness_deg)};

@@ -9,13 +9,16 @@
 #include <vector>
 
 #include "cvtmesh/features.hpp"
+#include "features/edge_uses.hpp"
 
 namespace cvtmesh {
 
 class CreaseScale {
  public:
-  // `barrier`: sorted feature edges that the sides of a crease do not extend across.
-  CreaseScale(const TriangleMesh& mesh, const std::vector<Edge>& barrier);
+  // `uses`: the mesh's edge_uses (kept by reference). `barrier`: sorted feature edges that the
+  // sides of a crease do not extend across.
+  CreaseScale(const TriangleMesh& mesh, const std::vector<EdgeUse>& uses,
+              const std::vector<Edge>& barrier);
 
   // For an edge of exactly two triangles, the surface within `radius` of its midpoint on each
   // side (reached across non-barrier edges): the angle between the two sides' area-weighted
@@ -42,12 +45,8 @@ class CreaseScale {
   // triangles or on the barrier.
   std::size_t across(std::size_t t, int k) const { return across_[3 * t + k]; }
 
-  struct Use {
-    Edge edge;
-    std::size_t corner;  // 3 t + k: triangle t's edge k
-  };
   const TriangleMesh& mesh_;
-  std::vector<Use> uses_;  // sorted by edge
+  const std::vector<EdgeUse>& uses_;
   std::vector<std::size_t> across_;
 };
 

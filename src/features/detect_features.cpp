@@ -8,44 +8,17 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
 #include "features/crease_at_scale.hpp"
+#include "features/edge_uses.hpp"
 
 namespace cvtmesh {
 
 namespace {
-
-Edge edge_of(Index a, Index b) {
-  return a < b ? Edge{a, b} : Edge{b, a};
-}
 
 Vec3 unit_normal(const TriangleMesh& mesh, std::size_t t) {
   const auto [a, b, c] = mesh.corners(t);
   const Vec3 n = cross(b - a, c - a);
   const double length = norm(n);
   return length > 0 ? (1 / length) * n : Vec3{};
-}
-
-// Whether triangle t runs along edge (a, b) from a to b.
-bool runs_forward(const Triangle& t, Index a, Index b) {
-  for (int k = 0; k < 3; ++k)
-    if (t[k] == a && t[(k + 1) % 3] == b) return true;
-  return false;
-}
-
-struct EdgeUse {
-  Edge edge;
-  std::size_t triangle;
-};
-
-std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      uses.push_back({edge_of(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]), t});
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.edge < y.edge || (x.edge == y.edge && x.triangle < y.triangle);
-  });
-  return uses;
 }
 
 // Whether the two triangles' normals make an angle above the threshold, their orientations
@@ -159,8 +132,8 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     const std::size_t count = end - k;
     if (count != 2) {
       f.edges.push_back(uses[k].edge);
-    } else if (settings.sharp_edges &&
-               sharp(mesh, uses[k].edge, uses[k].triangle, uses[k + 1].triangle, cos_threshold)) {
+    } else if (settings.sharp_edges && sharp(mesh, uses[k].edge, uses[k].triangle(),
+                                             uses[k + 1].triangle(), cos_threshold)) {
       f.edges.push_back(uses[k].edge);
       sharp_edges.push_back(uses[k].edge);
     }
@@ -191,7 +164,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
   if (settings.scale > 0) {
     // Curves of sharp edges only that are no features at the output's scale go, and the rest is
     // chained again: a corner of a dropped curve may be an ordinary curve vertex now.
-    const CreaseScale creases(mesh, f.edges);
+    const CreaseScale creases(mesh, uses, f.edges);
     auto feature_at_scale = [&](const FeatureCurve& c) {
       return curve_length(mesh, c) >= 2 * settings.scale &&
              (!settings.creases_at_scale ||

@@ -19,7 +19,7 @@ namespace {
 constexpr std::size_t kChunk = 1024;
 
 // Max over samples and vertices; mean and RMS over the area samples (an unbiased estimate of
-// the area-weighted mean). Queries run in Hilbert order, in fixed chunks, each query starting
+// the area-weighted mean). Queries run in Morton order, in fixed chunks, each query starting
 // from the previous one's foot: nearby points, so a short search. The distances do not depend on
 // that order, and the reduction runs serially in sample order: bit-identical for any thread count.
 OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,

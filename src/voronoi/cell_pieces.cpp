@@ -1,6 +1,7 @@
 #include "voronoi/cell_pieces.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <tuple>
 
 #include "geometry/union_find.hpp"
@@ -75,7 +76,7 @@ void CellPieceCollector::end() {
     }
   }
   std::vector<std::size_t> order(pieces_.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     const CellPiece &x = pieces_[a], &y = pieces_[b];
     return std::make_tuple(x.seed, -x.area, x.first) < std::make_tuple(y.seed, -y.area, y.first);

@@ -1,5 +1,7 @@
 #include "voronoi/multi_nerve.hpp"
 
+#include <numeric>
+
 #include "cvtmesh/repair.hpp"
 #include "voronoi/dual_triangle.hpp"
 
@@ -23,7 +25,7 @@ void MultiNerveBuilder::end() {
   result_ = {};
   result_.vertices = seeds;
   vertex_seed_.resize(seeds.size());
-  for (Index s = 0; s < seeds.size(); ++s) vertex_seed_[s] = s;
+  std::iota(vertex_seed_.begin(), vertex_seed_.end(), Index{0});
   // Each piece's vertex: its seed for the cell's first (largest) piece, a new one otherwise.
   std::vector<Index> vertex(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) {

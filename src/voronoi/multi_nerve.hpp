@@ -14,8 +14,8 @@ namespace cvtmesh {
 
 class MultiNerveBuilder : public PolygonSink {
  public:
-  MultiNerveBuilder(const RestrictedVoronoiDiagram& rvd, const TriangleMesh& surface)
-      : rvd_(rvd), pieces_(surface) {}
+  explicit MultiNerveBuilder(const RestrictedVoronoiDiagram& rvd)
+      : rvd_(rvd), pieces_(rvd.surface()) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
