@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   }
   try {
     return run();
+  } catch (const cvtmesh::Cancelled&) {
+    fmt::print(stderr, "cvtmesh: interrupted; no output written\n");
+    return kInterrupted;
   } catch (const cvtmesh::InputError& e) {
     fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
     return kInputError;

@@ -14,6 +14,7 @@
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "exit_codes.hpp"
+#include "interrupt_signal.hpp"
 #include "mesh_report.hpp"
 
 namespace cvtmesh::cli {
@@ -77,8 +78,15 @@ int run_remesh(RemeshOptions o) {
     };
   }
   if (!o.no_hausdorff) s.hausdorff = HausdorffSettings{.samples = o.samples};
+  install_interrupt_handler();
+  s.cancel = interrupt_requested;
   const RemeshResult r = remesh(input, s);
   write_mesh(o.output, r.mesh);
+  if (r.time_limit_reached)
+    fmt::print(stderr,
+               "{}: time limit of {:g} s reached: the output is the mesh of the seeds as they were "
+               "then (valid, less optimized)\n",
+               o.output, s.time_limit);
 
   MeshReport report = report_mesh(o.output, r.mesh, &input, r.hausdorff ? &*r.hausdorff : nullptr,
                                   &r.input_topology);
@@ -104,6 +112,7 @@ int run_remesh(RemeshOptions o) {
     j["links_flipped"] = r.links_flipped;
     j["tips_closed"] = r.tips_closed;
     j["mend_rounds"] = r.mend_rounds;
+    j["time_limit_reached"] = r.time_limit_reached;
     // null when there are input features but no output feature edges (JSON has no infinity).
     j["feature_hausdorff_max_pct"] =
         std::isfinite(fd.max) ? nlohmann::ordered_json(100 * fd.max / diagonal) : nullptr;
@@ -214,6 +223,11 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->excludes(angle);
   cmd->add_option("--feature-edges", o->feature_edges,
                   "File of feature edges to keep: \"a b\" vertex ids per line, # comments");
+  cmd->add_option("--time-limit", o->settings.time_limit,
+                  "Seconds: then the optimization and the rounds stop, and the mesh of the seeds "
+                  "as they are is written (valid; the report says so). 0: no limit")
+      ->default_val(0)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
   add_threads_option(*cmd, o->threads);

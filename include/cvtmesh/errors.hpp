@@ -26,4 +26,9 @@ struct InvalidArgument : Error {
   using Error::Error;
 };
 
+// The caller cancelled the work (RemeshSettings::cancel); nothing was produced.
+struct Cancelled : Error {
+  using Error::Error;
+};
+
 }  // namespace cvtmesh

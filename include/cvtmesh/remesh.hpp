@@ -38,6 +38,14 @@ struct RemeshSettings {
   std::uint64_t seed = 1;           // random initial seeds: same seed, same output
   std::vector<Vec3> initial_seeds;  // if not empty: used instead of random seeds
   std::function<void(const RemeshProgress&)> progress;  // called once per iteration
+  // Polled often (every few milliseconds of work), from any of the worker threads: when it
+  // returns true, remesh stops and throws Cancelled. Must be thread-safe and cheap.
+  std::function<bool()> cancel;
+  // Seconds, 0 for none. Once they have passed, the optimization, polishing and topology
+  // control stop where they are, and the output is extracted from the seeds as they are: a
+  // valid mesh (the same guarantees), less optimized (RemeshResult::time_limit_reached). The
+  // final extraction and the report run after the limit.
+  double time_limit = 0;
   // Rounds of local Lloyd steps around the output's badly shaped triangles (smallest angle
   // under 35° or Q under 0.65), after the optimization; 0 turns this off.
   int polish_rounds = 3;
@@ -93,7 +101,8 @@ struct RemeshResult {
   // edges and vertices, folds), so that the output is always an oriented manifold. Each leaves
   // a hole: when this is not 0 the output's topology differs from the input's.
   std::size_t triangles_removed = 0;
-  TopologyReport input_topology;  // of the input, as analyze_topology gives it
+  TopologyReport input_topology;    // of the input, as analyze_topology gives it
+  bool time_limit_reached = false;  // RemeshSettings::time_limit stopped the work early
   // Output (a) against input (b), when RemeshSettings::hausdorff asks for it.
   std::optional<HausdorffReport> hausdorff;
 };
@@ -103,7 +112,8 @@ struct RemeshResult {
 // exactly one size is set, or it is out of range (fewer than 4 vertices, more than 50 million).
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& settings);
 
-// Throws InvalidArgument for bad settings, InputError for a mesh without area.
+// Throws InvalidArgument for bad settings, InputError for a mesh without area, Cancelled when
+// settings.cancel asked to stop.
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings);
 
 }  // namespace cvtmesh

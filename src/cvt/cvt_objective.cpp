@@ -72,10 +72,13 @@ Vec3 CvtObjective::constrained(std::size_t s, const Vec3& p) const {
 
 CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
   const std::vector<Tangent> tangents = projector_ ? project(seeds) : std::vector<Tangent>{};
+  interrupt_.check();
   ++evaluations_;
   const RestrictedVoronoiDiagram rvd(surface_, seeds);
   CellIntegrator integrator(rvd);
-  rvd.traverse(integrator);
+  InterruptSink stop(interrupt_);
+  PolygonSink* sinks[] = {&integrator, &stop};
+  rvd.traverse(sinks);
   const CellIntegrals& integrals = integrator.result();
   Evaluation e{integrals.total_energy, integrals.gradient(seeds), {}};
   e.centroids.resize(seeds.size());

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "cvt/interrupt.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "features/feature_seeds.hpp"
 #include "geometry/surface_projector.hpp"
@@ -15,10 +16,16 @@ namespace cvtmesh {
 
 class CvtObjective {
  public:
-  // Restricted CVT without a projector; constrained CVT with one.
+  // Restricted CVT without a projector; constrained CVT with one. Evaluations check
+  // `interrupt` (a cancel throws Cancelled, even during an RVD pass).
   CvtObjective(const TriangleMesh& surface, const SurfaceProjector* projector,
-               const SeedConstraints* features = nullptr, const CurveProjector* curves = nullptr)
-      : surface_(surface), projector_(projector), features_(features), curves_(curves) {}
+               const SeedConstraints* features = nullptr, const CurveProjector* curves = nullptr,
+               const Interrupt* interrupt = nullptr)
+      : surface_(surface),
+        projector_(projector),
+        features_(features),
+        curves_(curves),
+        interrupt_(interrupt ? *interrupt : kNever) {}
 
   struct Evaluation {
     double energy;
@@ -28,6 +35,8 @@ class CvtObjective {
   // `seeds` are replaced by the points actually evaluated (projected, when constrained).
   Evaluation operator()(std::vector<Vec3>& seeds);
   int evaluations() const { return evaluations_; }
+  // What stops the work done with this objective (the optimization, polishing, topology control).
+  const Interrupt& interrupt() const { return interrupt_; }
 
   // Constrained CVT only. Moves each seed to its nearest surface point (curve seeds: curve point;
   // corner seeds: their corner) and returns, per seed, how to constrain its gradient. A seed that
@@ -54,6 +63,8 @@ class CvtObjective {
   const SurfaceProjector* projector_;
   const SeedConstraints* features_;
   const CurveProjector* curves_;
+  static inline const Interrupt kNever;
+  const Interrupt& interrupt_;
   int evaluations_ = 0;
   std::vector<SurfaceProjector::Foot> hints_;  // the feet of the last projection
 };

@@ -3,8 +3,12 @@
 #include <lbfgs.h>
 
 #include <cmath>
+#include <exception>
+#include <limits>
 #include <optional>
 #include <stdexcept>
+
+#include "cvtmesh/errors.hpp"
 
 namespace cvtmesh {
 
@@ -33,6 +37,9 @@ struct LbfgsState {
   PhaseResult& result;
   double scale;
   std::optional<CvtObjective::Evaluation> first;
+  // A cancel thrown during an evaluation: exceptions must not unwind through liblbfgs's C code,
+  // so it is kept here, liblbfgs is made to stop, and it is thrown again once it has.
+  std::exception_ptr cancelled;
 };
 
 lbfgsfloatval_t evaluate(void* instance, const lbfgsfloatval_t* y, lbfgsfloatval_t* g, int n,
@@ -43,9 +50,15 @@ lbfgsfloatval_t evaluate(void* instance, const lbfgsfloatval_t* y, lbfgsfloatval
     e = std::move(*s.first);
     s.first.reset();
   } else {
+    if (s.cancelled) return std::numeric_limits<double>::infinity();  // the line search fails
     const double c = s.scale;
     for (int k = 0; k < n / 3; ++k) s.seeds[k] = c * Vec3{y[3 * k], y[3 * k + 1], y[3 * k + 2]};
-    e = s.objective(s.seeds);
+    try {
+      e = s.objective(s.seeds);
+    } catch (const Cancelled&) {
+      s.cancelled = std::current_exception();
+      return std::numeric_limits<double>::infinity();
+    }
   }
   for (int k = 0; k < n / 3; ++k) {
     const Vec3 gy = s.scale * e.gradient[k];  // dF/dy = scale · dF/dx
@@ -63,7 +76,14 @@ int progress(void* instance, const lbfgsfloatval_t*, const lbfgsfloatval_t*, lbf
   s.result.energy_final = fx;
   s.result.gradient_final = gnorm;
   report(s.options, k, fx, gnorm);
-  // Non-zero stops liblbfgs: the relative gradient tolerance is met.
+  // Non-zero stops liblbfgs: the relative gradient tolerance is met, or the time is up.
+  if (s.cancelled) return 1;
+  try {
+    if (s.objective.interrupt().out_of_time()) return 1;
+  } catch (const Cancelled&) {
+    s.cancelled = std::current_exception();
+    return 1;
+  }
   return gnorm <= s.options.gradient_tolerance * s.result.gradient_initial ? 1 : 0;
 }
 
@@ -73,7 +93,7 @@ PhaseResult minimize_lbfgs(CvtObjective& objective, std::vector<Vec3>& seeds,
                            const PhaseOptions& o) {
   PhaseResult result;
   if (o.max_iterations <= 0) return result;
-  LbfgsState state{objective, seeds, o, result, 1.0, objective(seeds)};
+  LbfgsState state{objective, seeds, o, result, 1.0, objective(seeds), nullptr};
   result.energy_initial = state.first->energy;
   result.gradient_initial = norm_of(state.first->gradient);
   // liblbfgs tries a first step of unit length along -∇F. Scaling the variables by the length
@@ -106,6 +126,7 @@ PhaseResult minimize_lbfgs(CvtObjective& objective, std::vector<Vec3>& seeds,
   for (std::size_t k = 0; k < seeds.size(); ++k)
     seeds[k] = state.scale * Vec3{y[3 * k], y[3 * k + 1], y[3 * k + 2]};
   lbfgs_free(y);
+  if (state.cancelled) std::rethrow_exception(state.cancelled);
   if (result.energies.empty()) result.energy_final = result.energy_initial;
   return result;
 }
@@ -125,7 +146,9 @@ PhaseResult minimize_lloyd(CvtObjective& objective, std::vector<Vec3>& seeds,
     }
     result.energy_final = e.energy;
     result.gradient_final = g;
-    if (k == o.max_iterations || g <= o.gradient_tolerance * result.gradient_initial) break;
+    if (k == o.max_iterations || g <= o.gradient_tolerance * result.gradient_initial ||
+        objective.interrupt().out_of_time())
+      break;
     seeds = e.centroids;  // x_i ← c_i
   }
   return result;

@@ -210,7 +210,8 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     const RestrictedVoronoiDiagram rvd(surface, seeds);
     MultiNerveBuilder rdt(rvd);
     CellCoverage coverage;
-    PolygonSink* sinks[] = {&rdt, &coverage};
+    InterruptSink stop(objective.interrupt());
+    PolygonSink* sinks[] = {&rdt, &coverage, &stop};
     rvd.traverse(sinks);
     out.mesh = rdt.result();
     out.vertex_seed = rdt.vertex_seed();
@@ -227,7 +228,8 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
                   [&](Index s) { return objective.kind(s) != SeedConstraints::Kind::surface; });
     // Done, also when the last round already moved all these seeds: Lloyd converged there to
     // a shape it cannot improve.
-    if (defective.empty() || round == settings.rounds ||
+    // Out of time (issue 22), the output is as good as it gets.
+    if (defective.empty() || round == settings.rounds || objective.interrupt().out_of_time() ||
         std::includes(moving.begin(), moving.end(), movable.begin(), movable.end()))
       return out;
     ++out.rounds;

@@ -193,6 +193,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // detail finer than the spacing; where the rounds only add defects (thin sheets whose
     // boundaries the seeds cannot trace: ALSTOM_TEST4.off went from 483 to 5,736 stray boundary
     // edges in 12 rounds), they stop.
+    // Out of time (issue 22), the rounds go on for the topology only: validity comes first.
+    const bool out_of_time = m.placement.interrupt().out_of_time();
     if (round < rounds && since_best < kRoundsWithoutProgress) {
       // Where the output shows a defect, from the seeds as extracted (one RVD for both): a seed in
       // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
@@ -207,7 +209,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
         }
         found = defect_seeds(m.surface, seeds, dual);
       }
-      if (!a.missing.empty()) {
+      if (!a.missing.empty() && !out_of_time) {
         const std::size_t mended =
             mend_missing_links(seeds, constraints, a.missing, m.curves, m.spacing);
         report.links_mended += mended;

@@ -8,6 +8,7 @@
 
 #include <tbb/task_group.h>
 
+#include "cvt/interrupt.hpp"
 #include "cvt/minimize.hpp"
 #include "cvt/polish_defects.hpp"
 #include "cvtmesh/errors.hpp"
@@ -100,6 +101,8 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     throw InvalidArgument("the number of topology control rounds must not be negative");
   if (!(settings.gradient_tolerance > 0))
     throw InvalidArgument("the gradient tolerance must be positive");
+  if (!(settings.time_limit >= 0)) throw InvalidArgument("the time limit must not be negative");
+  const Interrupt interrupt(settings.cancel, settings.time_limit, start);
   if (!(surface_area(input) > 0)) throw InputError("the surface has no area");
   // Everything below works on the input in spatial order (issue 19: RVD walks on a file in no
   // spatial order are up to 10x longer); the features are reported in the caller's ids.
@@ -130,9 +133,12 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
   result.seconds_initialization = seconds(start);
 
   // RCVT when `bound` is null; CCVT with the seeds bound as it says otherwise.
+  // Out of time, a phase does not start (issue 22: the seeds as they are make the output).
   auto run_phase = [&](const char* name, const SeedConstraints* bound, double& phase_seconds) {
+    if (interrupt.out_of_time()) return;
     const auto phase_start = Clock::now();
-    CvtObjective objective(mesh, bound ? &*projector : nullptr, bound, bound ? &*curves : nullptr);
+    CvtObjective objective(mesh, bound ? &*projector : nullptr, bound, bound ? &*curves : nullptr,
+                           &interrupt);
     const PhaseOptions options{name, settings.iterations, settings.gradient_tolerance,
                                &settings.progress, start};
     const PhaseResult phase = settings.optimizer == Optimizer::lbfgs
@@ -160,7 +166,8 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     // Surface seeds that took over a stretch of a curve join it, and CCVT resumes. Then the curve
     // seeds even out along their curves and the surface seeds relax around them, held there;
     // that rarely leaves a stray, but if it does, another round.
-    for (int round = 0; round < kSnapRounds && !constraints.empty(); ++round) {
+    for (int round = 0; round < kSnapRounds && !constraints.empty() && !interrupt.timed_out();
+         ++round) {
       const std::size_t joined = snap_stray_seeds(seeds, constraints, *curves, spacing);
       if (round > 0 && joined == 0) break;
       double more = 0;
@@ -176,7 +183,7 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
   // Output vertices lie on the surface: project (a no-op after CCVT), then triangulate, with
   // local Lloyd steps around any badly shaped triangles.
   const auto extraction_start = Clock::now();
-  CvtObjective placement(mesh, &*projector, &constraints, &*curves);
+  CvtObjective placement(mesh, &*projector, &constraints, &*curves, &interrupt);
   placement.project(seeds);
   PolishedOutput output = extract_polished(mesh, seeds, placement, {settings.polish_rounds});
   result.polish_rounds = output.rounds;
@@ -211,6 +218,8 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     result.feature_edges_missing = wanted.size() - result.feature_edges.size();
   }
   result.seconds_extraction = seconds(extraction_start);
+  result.time_limit_reached = interrupt.timed_out();
+  interrupt.check();
   if (settings.hausdorff && !result.mesh.triangles.empty())
     result.hausdorff = hausdorff_distance(result.mesh, input, *projector, *settings.hausdorff);
   return result;
