@@ -336,6 +336,35 @@ namespace {
 
 using namespace cvtmesh::testing;
 
+// AddressSanitizer reserves terabytes of address space: an address-space limit cannot be set
+// under it.
+#if defined(__SANITIZE_ADDRESS__)
+#define CVTMESH_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CVTMESH_UNDER_ASAN 1
+#endif
+#endif
+
+TEST(CliRemesh, AJobTooBigForTheMemoryLimitFailsAtOnce) {
+#ifdef CVTMESH_UNDER_ASAN
+  GTEST_SKIP() << "address-space limits do not work under AddressSanitizer";
+#endif
+  TempDir dir;
+  write_mesh(dir / "tri.off", TriangleMesh{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}});
+  // 2 GB of address space; 10 million vertices need about 15 GB.
+  const std::string command = "ulimit -v 2000000 && exec " + std::string(CVTMESH_CLI) + " remesh " +
+                              quoted(dir / "tri.off") + " " + quoted(dir / "out.off") +
+                              " --vertices 10000000 2>" + quoted(dir / "err.txt");
+  const int status = std::system(("sh -c \"" + command + "\"").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5);
+  const std::string err = read_file(dir / "err.txt");
+  EXPECT_NE(err.find("1 triangles to 10000000 vertices needs about"), std::string::npos) << err;
+  EXPECT_NE(err.find("are available"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
+}
+
 TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   TempDir dir;
   write_mesh(dir / "sphere.off", icosphere(4));

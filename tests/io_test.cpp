@@ -105,6 +105,22 @@ TEST(ReadMesh, BinaryBigEndianPly) {
   EXPECT_EQ(m.triangles[1], (Triangle{0, 2, 3}));
 }
 
+// Found by fuzzing: CGAL's PLY reader writes out of bounds on a property declared before any
+// element (fuzz/regressions/fuzz_read_ply replays the fuzzer's input under the sanitizers).
+TEST(ReadMesh, PlyPropertyBeforeAnyElementIsRefused) {
+  TempDir dir;
+  write_file(dir / "p.ply",
+             "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n");
+  try {
+    read_mesh(dir / "p.ply");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 3 declares a property before any element"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ReadMesh, AsciiStlSharesCornersBetweenFacets) {
   TempDir dir;
   write_file(dir / "a.stl",

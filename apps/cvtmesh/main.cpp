@@ -48,6 +48,9 @@ int main(int argc, char** argv) {
   } catch (const cvtmesh::Cancelled&) {
     fmt::print(stderr, "cvtmesh: interrupted; no output written\n");
     return kInterrupted;
+  } catch (const cvtmesh::ResourceError& e) {
+    fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
+    return kNoMemory;
   } catch (const cvtmesh::InputError& e) {
     fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
     return kInputError;

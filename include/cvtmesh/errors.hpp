@@ -26,6 +26,11 @@ struct InvalidArgument : Error {
   using Error::Error;
 };
 
+// The job would need more memory than is available (checked before it starts).
+struct ResourceError : Error {
+  using Error::Error;
+};
+
 // The caller cancelled the work (RemeshSettings::cancel); nothing was produced.
 struct Cancelled : Error {
   using Error::Error;

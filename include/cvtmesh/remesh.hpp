@@ -112,7 +112,8 @@ struct RemeshResult {
 // exactly one size is set, or it is out of range (fewer than 4 vertices, more than 50 million).
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& settings);
 
-// Throws InvalidArgument for bad settings, InputError for a mesh without area, Cancelled when
+// Throws InvalidArgument for bad settings, InputError for a mesh without area, ResourceError
+// when the job would need more memory than is available (checked first), Cancelled when
 // settings.cancel asked to stop.
 RemeshResult remesh(const TriangleMesh& mesh, const RemeshSettings& settings);
 

@@ -58,6 +58,26 @@ void check_binary_stl_size(const std::filesystem::path& path, std::istream& in,
                    std::to_string(size) + " bytes");
 }
 
+// CGAL 5.5's PLY reader adds each property to the last element declared, without checking that
+// there is one: a property line before the first element line writes out of bounds (found by
+// fuzzing). Such a header is refused here.
+void check_ply_header(const std::filesystem::path& path, std::istream& in) {
+  std::string line;
+  bool element = false;
+  for (int number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "end_header") break;
+    if (keyword == "element") element = true;
+    if (keyword == "property" && !element)
+      fail(path, "malformed PLY header: line " + std::to_string(number) +
+                     " declares a property before any element");
+  }
+  in.clear();
+  in.seekg(0);
+}
+
 bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbose) {
   const auto np = CGAL::parameters::verbose(verbose);
   switch (format) {
@@ -243,6 +263,7 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size == 0) fail(path, "file is empty");
   if (*format == MeshFormat::stl) check_binary_stl_size(path, in, size);
+  if (*format == MeshFormat::ply) check_ply_header(path, in);
 
   Soup soup;
   bool parsed = false;

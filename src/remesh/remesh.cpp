@@ -21,6 +21,7 @@
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
+#include "system/memory_budget.hpp"
 
 namespace cvtmesh {
 
@@ -246,6 +247,10 @@ RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   // Issue 22: the work is done on the input scaled by a power of two to about unit size, and
   // the output scaled back, both exactly; a shape in any units gives the same output up to the
   // scale.
+  // A job that cannot fit fails now, not when the system kills it after minutes of work.
+  check_memory_for(input.triangles.size(), settings.initial_seeds.empty()
+                                               ? requested_vertex_count(input, settings)
+                                               : settings.initial_seeds.size());
   const int exponent = size_exponent(input);
   if (exponent == 0) return remesh_unit(input, settings);
   RemeshResult r =
