@@ -25,6 +25,15 @@ std::shared_ptr<tbb::global_control> limit_threads(int threads) {
                                                static_cast<std::size_t>(threads));
 }
 
+// The exit code of a library error: each kind has its own (exit_codes.hpp).
+int exit_code_for(const cvtmesh::Error& e) {
+  if (dynamic_cast<const cvtmesh::ResourceError*>(&e)) return kNoMemory;
+  if (dynamic_cast<const cvtmesh::InputError*>(&e)) return kInputError;
+  if (dynamic_cast<const cvtmesh::OutputError*>(&e)) return kOutputError;
+  if (dynamic_cast<const cvtmesh::InvalidArgument*>(&e)) return kUsage;
+  return kInternalError;
+}
+
 }  // namespace cvtmesh::cli
 
 int main(int argc, char** argv) {
@@ -48,18 +57,11 @@ int main(int argc, char** argv) {
   } catch (const cvtmesh::Cancelled&) {
     fmt::print(stderr, "cvtmesh: interrupted; no output written\n");
     return kInterrupted;
-  } catch (const cvtmesh::ResourceError& e) {
-    fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
-    return kNoMemory;
-  } catch (const cvtmesh::InputError& e) {
-    fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
-    return kInputError;
-  } catch (const cvtmesh::OutputError& e) {
-    fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
-    return kOutputError;
-  } catch (const cvtmesh::InvalidArgument& e) {
-    fmt::print(stderr, "cvtmesh: error: {}\n", e.what());
-    return kUsage;
+  } catch (const cvtmesh::Error& e) {
+    const int code = exit_code_for(e);
+    fmt::print(stderr, "cvtmesh: {}: {}\n", code == kInternalError ? "internal error" : "error",
+               e.what());
+    return code;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "cvtmesh: error: out of memory\n");
     return kInternalError;
