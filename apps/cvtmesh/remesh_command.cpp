@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include "commands.hpp"
 
 #include "cvtmesh/errors.hpp"
@@ -135,15 +136,18 @@ int run_remesh(RemeshOptions o) {
     fmt::print("{}\n", j.dump(2));
   } else {
     fmt::print("{}", report.text);
+    // With no output feature edge there is no distance to give (JSON: null).
+    const std::string distance =
+        std::isfinite(fd.max) ? fmt::format("distance max {:.4f}% mean {:.4f}% of bbox diagonal",
+                                            100 * fd.max / diagonal, 100 * fd.mean / diagonal)
+                              : "no distance (no output feature edge)";
     if (!r.features.empty())
       fmt::print(
           "  features  {} edges in {} curves, {}/{} corners kept, {} output feature edges ({} "
-          "missing, {} mended), distance max {:.4f}% mean {:.4f}% of bbox diagonal; narrowest "
-          "angle between input features {:.2f}° (θmin of a faithful output is at most about "
-          "that)\n",
+          "missing, {} mended), {}; narrowest angle between input features {:.2f}° (θmin of a "
+          "faithful output is at most about that)\n",
           r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
-          r.feature_edges.size(), r.feature_edges_missing, r.links_mended, 100 * fd.max / diagonal,
-          100 * fd.mean / diagonal, sector);
+          r.feature_edges.size(), r.feature_edges_missing, r.links_mended, distance, sector);
     fmt::print(
         "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
         "triangles polished in {} rounds\n",

@@ -3,14 +3,14 @@
 #include <sstream>
 #include <string>
 
-#include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
+#include "io/input_problem.hpp"
 
 namespace cvtmesh {
 
 std::vector<Edge> read_feature_edges(const std::filesystem::path& path) {
   std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open the feature-edge file");
+  if (!in) input_problem(path, "cannot open the feature-edge file");
   std::vector<Edge> edges;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
@@ -23,11 +23,10 @@ std::vector<Edge> read_feature_edges(const std::filesystem::path& path) {
     std::string rest;
     if (!(fields >> a >> b) || (fields >> rest) || a < 0 || b < 0 || a > 0xFFFFFFFELL ||
         b > 0xFFFFFFFELL || a == b)
-      throw InputError(path.string() + ":" + std::to_string(number) +
-                       ": expected two different vertex ids, got \"" + line + "\"");
+      input_problem(path, number, "expected two different vertex ids, got \"" + line + "\"");
     edges.push_back({static_cast<Index>(a), static_cast<Index>(b)});
   }
-  if (in.bad()) throw InputError(path.string() + ": read error");
+  if (in.bad()) input_problem(path, "read error");
   return edges;
 }
 

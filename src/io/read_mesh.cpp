@@ -1,10 +1,8 @@
-// Reading goes through CGAL's polygon-soup readers; this file adds what they leave out: a
-// precise one-line diagnosis of what is wrong with a file, validation, and triangulation.
+// Reading goes through CGAL's polygon-soup readers (OFF and PLY through our own); this file adds
+// what they leave out: a precise one-line diagnosis of what is wrong with a file, validation, and
+// triangulation.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
-#include <CGAL/IO/OFF/File_scanner_OFF.h>
-#include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 
 #include <cerrno>
@@ -18,8 +16,10 @@
 #include <sstream>
 #include <string>
 
-#include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
+#include "io/input_problem.hpp"
+#include "io/read_off.hpp"
+#include "io/read_ply.hpp"
 
 namespace cvtmesh {
 
@@ -32,10 +32,6 @@ struct Soup {
   std::vector<Point> points;
   std::vector<Polygon> polygons;
 };
-
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& problem) {
-  throw InputError(path.string() + ": " + problem);
-}
 
 // A binary STL is an 80-byte header, a uint32 triangle count, then 50 bytes per triangle. CGAL
 // does not say why a short file fails, so check the size here.
@@ -53,29 +49,9 @@ void check_binary_stl_size(const std::filesystem::path& path, std::istream& in,
   std::memcpy(&count, head + 80, 4);
   const std::uintmax_t expected = 84 + 50 * std::uintmax_t{count};
   if (size < expected)
-    fail(path, "truncated binary STL: the header announces " + std::to_string(count) +
-                   " triangles (" + std::to_string(expected) + " bytes), the file has " +
-                   std::to_string(size) + " bytes");
-}
-
-// CGAL 5.5's PLY reader adds each property to the last element declared, without checking that
-// there is one: a property line before the first element line writes out of bounds (found by
-// fuzzing). Such a header is refused here.
-void check_ply_header(const std::filesystem::path& path, std::istream& in) {
-  std::string line;
-  bool element = false;
-  for (int number = 1; std::getline(in, line); ++number) {
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "end_header") break;
-    if (keyword == "element") element = true;
-    if (keyword == "property" && !element)
-      fail(path, "malformed PLY header: line " + std::to_string(number) +
-                     " declares a property before any element");
-  }
-  in.clear();
-  in.seekg(0);
+    input_problem(path, "truncated binary STL: the header announces " + std::to_string(count) +
+                            " triangles (" + std::to_string(expected) + " bytes), the file has " +
+                            std::to_string(size) + " bytes");
 }
 
 bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbose) {
@@ -84,9 +60,8 @@ bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbos
     case MeshFormat::obj:
       return CGAL::IO::read_OBJ(in, soup.points, soup.polygons, np);
     case MeshFormat::off:
-      return CGAL::IO::read_OFF(in, soup.points, soup.polygons, np);
     case MeshFormat::ply:
-      return CGAL::IO::read_PLY(in, soup.points, soup.polygons, np);
+      break;  // read by read_off and read_ply, never by CGAL
     case MeshFormat::stl: {
       std::vector<std::array<std::size_t, 3>> triangles;
       const bool ok = CGAL::IO::read_STL(in, soup.points, triangles, np);
@@ -154,26 +129,6 @@ std::string emptiness(const Soup& soup) {
   return "";
 }
 
-// CGAL's read_OFF keeps its scanner quiet; drive the scanner the same way, verbosely, so that it
-// names the problem (bad index, premature end, ...). Diagnosis only: the data are discarded.
-void scan_off_verbosely(std::istream& in) {
-  CGAL::File_scanner_OFF scanner(in, true);
-  for (std::size_t i = 0; in && i < scanner.size_of_vertices(); ++i) {
-    double x, y, z, w, nx, ny, nz;
-    unsigned char r, g, b;
-    scanner.scan_vertex(x, y, z, w);
-    if (scanner.has_normals()) scanner.scan_normal(nx, ny, nz);
-    if (scanner.has_vcolors()) scanner.scan_color(r, g, b);
-    if (scanner.has_textures()) scanner.scan_texture(x, y);
-    if (in) scanner.skip_to_next_vertex(i);
-  }
-  for (std::size_t f = 0; in && f < scanner.size_of_facets(); ++f) {
-    std::size_t corners = 0, id = 0;
-    scanner.scan_facet(corners, f);
-    for (std::size_t k = 0; in && k < corners; ++k) scanner.scan_facet_vertex_index(id, k + 1, f);
-  }
-}
-
 // CGAL's readers say why they fail only on std::cerr, in verbose mode. After a quiet read has
 // failed, read again verbosely with the standard streams captured, and keep CGAL's last line.
 // Only failing reads get here, and the mutex keeps two of them from mixing their captures.
@@ -185,12 +140,8 @@ std::string cgal_diagnosis(MeshFormat format, const std::filesystem::path& path)
   std::streambuf* const out = std::cout.rdbuf(captured.rdbuf());
   try {
     std::ifstream in(path, std::ios::binary);
-    if (format == MeshFormat::off) {
-      scan_off_verbosely(in);
-    } else {
-      Soup ignored;
-      read_with_cgal(format, in, ignored, true);
-    }
+    Soup ignored;
+    read_with_cgal(format, in, ignored, true);
   } catch (const std::exception&) {
   }
   std::cerr.rdbuf(err);
@@ -231,7 +182,7 @@ std::string find_non_finite_token(const std::filesystem::path& path) {
 
 TriangleMesh triangulate(const std::filesystem::path& path, Soup& soup, ReadReport& report) {
   if (soup.points.size() > std::numeric_limits<Index>::max())
-    fail(path, "too many vertices (" + std::to_string(soup.points.size()) + ")");
+    input_problem(path, "too many vertices (" + std::to_string(soup.points.size()) + ")");
   TriangleMesh mesh;
   mesh.vertices.reserve(soup.points.size());
   for (const Point& p : soup.points) mesh.vertices.push_back({p.x(), p.y(), p.z()});
@@ -252,41 +203,50 @@ TriangleMesh triangulate(const std::filesystem::path& path, Soup& soup, ReadRepo
 TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) fail(path, "no such file");
-  if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a mesh file");
+  if (!std::filesystem::exists(status)) input_problem(path, "no such file");
+  if (std::filesystem::is_directory(status)) input_problem(path, "is a directory, not a mesh file");
   const auto format = format_from_extension(path);
   if (!format)
-    fail(path, "unknown extension '" + path.extension().string() +
-                   "' (expected .obj, .off, .ply or .stl)");
+    input_problem(path, "unknown extension '" + path.extension().string() +
+                            "' (expected .obj, .off, .ply or .stl)");
   std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open for reading: ") + std::strerror(errno));
+  if (!in) input_problem(path, std::string("cannot open for reading: ") + std::strerror(errno));
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size == 0) fail(path, "file is empty");
+  if (ec || size == 0) input_problem(path, "file is empty");
   if (*format == MeshFormat::stl) check_binary_stl_size(path, in, size);
-  if (*format == MeshFormat::ply) check_ply_header(path, in);
 
   Soup soup;
   bool parsed = false;
-  try {
-    parsed = read_with_cgal(*format, in, soup, false);
-  } catch (const std::exception& e) {
-    fail(path, "malformed " + format_name(*format) + " data (" + e.what() + ")");
+  if (*format == MeshFormat::off || *format == MeshFormat::ply) {
+    PolygonSoup own =
+        *format == MeshFormat::off ? read_off(path, in, size) : read_ply(path, in, size);
+    soup.points.reserve(own.points.size());
+    for (const auto& p : own.points) soup.points.emplace_back(p[0], p[1], p[2]);
+    soup.polygons = std::move(own.polygons);
+    parsed = true;
+  } else {
+    try {
+      parsed = read_with_cgal(*format, in, soup, false);
+    } catch (const std::exception& e) {
+      input_problem(path, "malformed " + format_name(*format) + " data (" + e.what() + ")");
+    }
   }
   if (parsed) {
     for (const std::string& problem :
          {non_finite_vertex(soup), out_of_range_index(soup), short_face(soup), emptiness(soup)})
-      if (!problem.empty()) fail(path, problem);
+      if (!problem.empty()) input_problem(path, problem);
   } else {
     // A reader that stopped early leaves a partial soup (its last face may be half-read), so
     // only the problems that caused the stop are looked for.
-    if (std::string token = find_non_finite_token(path); !token.empty()) fail(path, token);
-    if (std::string problem = out_of_range_index(soup); !problem.empty()) fail(path, problem);
+    if (std::string token = find_non_finite_token(path); !token.empty()) input_problem(path, token);
+    if (std::string problem = out_of_range_index(soup); !problem.empty())
+      input_problem(path, problem);
     const std::string why = cgal_diagnosis(*format, path);
     if (std::string problem = emptiness(soup);
         !problem.empty() && (why.empty() || why.find("empty") != std::string::npos))
-      fail(path, problem);
-    fail(path, "malformed or truncated " + format_name(*format) + " data" +
-                   (why.empty() ? "" : " (" + why + ")"));
+      input_problem(path, problem);
+    input_problem(path, "malformed or truncated " + format_name(*format) + " data" +
+                            (why.empty() ? "" : " (" + why + ")"));
   }
   ReadReport local;
   TriangleMesh mesh = triangulate(path, soup, report ? *report : local);

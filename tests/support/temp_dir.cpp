@@ -5,6 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/io.hpp"
+
 namespace cvtmesh::testing {
 
 TempDir::TempDir() {
@@ -27,6 +30,15 @@ std::string read_file(const std::filesystem::path& path) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::string read_mesh_error(const std::filesystem::path& path) {
+  try {
+    read_mesh(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace cvtmesh::testing

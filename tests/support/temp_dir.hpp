@@ -23,4 +23,7 @@ class TempDir {
 void write_file(const std::filesystem::path& path, const std::string& bytes);
 std::string read_file(const std::filesystem::path& path);
 
+// The message of the InputError that reading `path` as a mesh throws, or "no error".
+std::string read_mesh_error(const std::filesystem::path& path);
+
 }  // namespace cvtmesh::testing

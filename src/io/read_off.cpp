@@ -1,0 +1,266 @@
+// OFF as Geomview specifies it: a header keyword whose prefixes say what each vertex line holds
+// besides its coordinates, the counts, the vertices, then faces "k i1 .. ik [colour]". Only
+// positions and faces are kept; everything after the coordinates and indices is skipped, so a
+// colour of any width is harmless.
+#include "io/read_off.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <charconv>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "io/input_problem.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+struct Header {
+  bool texture = false;      // ST: 2 texture coordinates (3 if homogeneous) per vertex
+  bool colour = false;       // C: a colour per vertex
+  bool normal = false;       // N: a normal per vertex
+  bool homogeneous = false;  // 4: x y z w
+  bool dimension = false;    // n: the dimension is given before the counts
+  bool binary = false;
+};
+
+class OffReader {
+ public:
+  OffReader(const std::filesystem::path& path, std::istream& in, std::uintmax_t file_size)
+      : path_(path), in_(in), file_size_(file_size) {}
+
+  PolygonSoup read() {
+    if (!next_line()) fail("empty OFF file");
+    Header header;
+    if (!tokens_.empty() && parse_keyword(tokens_.front(), header)) {
+      tokens_.erase(tokens_.begin());
+      if (!tokens_.empty() && tokens_.front() == "BINARY") {
+        header.binary = true;
+        tokens_.erase(tokens_.begin());
+      }
+    } else if (tokens_.empty() || !is_integer(tokens_.front())) {
+      fail_here("not an OFF file: expected the keyword OFF, got '" + first_token() + "'");
+    }
+    if (header.binary) return read_binary(header);
+    if (header.dimension) {
+      const std::uint64_t dim = count("the dimension");
+      if (dim != 3) fail_here("nOFF of dimension " + std::to_string(dim) + " (only 3 is read)");
+    }
+    const std::uint64_t vertices = count("the vertex count");
+    const std::uint64_t faces = count("the face count");
+    PolygonSoup soup;
+    soup.points.reserve(capped(vertices));
+    for (std::uint64_t v = 0; v < vertices; ++v) {
+      if (!next_line()) truncated(vertices, faces, v, 0);
+      soup.points.push_back(vertex(v, header.homogeneous));
+    }
+    soup.polygons.reserve(capped(faces));
+    for (std::uint64_t f = 0; f < faces; ++f) {
+      if (!next_line()) truncated(vertices, faces, vertices, f);
+      soup.polygons.push_back(face(f, vertices));
+    }
+    return soup;
+  }
+
+ private:
+  // [ST][C][N][4][n]OFF, in that order.
+  static bool parse_keyword(std::string_view word, Header& header) {
+    if (!word.ends_with("OFF")) return false;
+    word.remove_suffix(3);
+    auto take = [&word](std::string_view prefix) {
+      if (!word.starts_with(prefix)) return false;
+      word.remove_prefix(prefix.size());
+      return true;
+    };
+    header.texture = take("ST");
+    header.colour = take("C");
+    header.normal = take("N");
+    header.homogeneous = take("4");
+    header.dimension = take("n");
+    return word.empty();
+  }
+
+  static bool is_integer(std::string_view token) {
+    return !token.empty() &&
+           std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+  }
+
+  // The next line with content, comments removed, split into tokens_. False at the end.
+  bool next_line() {
+    while (std::getline(in_, line_)) {
+      ++line_number_;
+      if (const auto hash = line_.find('#'); hash != std::string::npos) line_.erase(hash);
+      tokens_.clear();
+      std::size_t at = 0;
+      while (true) {
+        at = line_.find_first_not_of(" \t\r\v\f", at);
+        if (at == std::string::npos) break;
+        const std::size_t end = std::min(line_.find_first_of(" \t\r\v\f", at), line_.size());
+        tokens_.emplace_back(line_, at, end - at);
+        at = end;
+      }
+      if (!tokens_.empty()) return true;
+    }
+    if (in_.bad()) fail("read error");
+    return false;
+  }
+
+  // A count from the current line, or from the next one once this line is used up: Geomview
+  // allows the counts on the keyword's line or on their own.
+  std::uint64_t count(const std::string& what) {
+    if (used_ == tokens_.size()) {
+      if (!next_line()) fail("truncated OFF data: the file ends before " + what);
+      used_ = 0;
+    }
+    const std::string& token = tokens_[used_++];
+    std::uint64_t value = 0;
+    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (ec != std::errc() || end != token.data() + token.size())
+      fail_here(what + " '" + token + "' is not a non-negative integer");
+    return value;
+  }
+
+  std::array<double, 3> vertex(std::uint64_t v, bool homogeneous) {
+    const std::size_t needed = homogeneous ? 4 : 3;
+    if (tokens_.size() < needed)
+      fail_here("vertex " + std::to_string(v) + " has " + std::to_string(tokens_.size()) +
+                " coordinates (expected " + std::to_string(needed) + ")");
+    double x[4];
+    for (std::size_t k = 0; k < needed; ++k) x[k] = number(tokens_[k], v);
+    if (homogeneous) return {x[0] / x[3], x[1] / x[3], x[2] / x[3]};
+    return {x[0], x[1], x[2]};
+  }
+
+  double number(const std::string& token, std::uint64_t v) {
+    std::string_view text = token;
+    if (text.starts_with('+')) text.remove_prefix(1);  // from_chars refuses a leading '+'
+    double value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    // Out of range: from_chars leaves the value alone; a huge magnitude is infinite, which the
+    // caller's check of finite coordinates names.
+    if (ec == std::errc::result_out_of_range) return std::strtod(token.c_str(), nullptr);
+    if (ec != std::errc() || end != text.data() + text.size())
+      fail_here("vertex " + std::to_string(v) + ": '" + token + "' is not a number");
+    return value;
+  }
+
+  std::vector<std::size_t> face(std::uint64_t f, std::uint64_t vertices) {
+    long long corners = index(tokens_[0], f);
+    if (corners < 0 || static_cast<std::size_t>(corners) > tokens_.size() - 1)
+      fail_here("face " + std::to_string(f) + " announces " + tokens_[0] +
+                " corners, its line has " + std::to_string(tokens_.size() - 1) + " more numbers");
+    std::vector<std::size_t> polygon(static_cast<std::size_t>(corners));
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const long long id = index(tokens_[k + 1], f);
+      if (id < 0 || static_cast<std::uint64_t>(id) >= vertices) out_of_range(f, id, vertices);
+      polygon[k] = static_cast<std::size_t>(id);
+    }
+    return polygon;
+  }
+
+  long long index(const std::string& token, std::uint64_t f) {
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (ec != std::errc() || end != token.data() + token.size())
+      fail_here("face " + std::to_string(f) + ": '" + token + "' is not an integer");
+    return value;
+  }
+
+  // Binary OFF: big-endian int32 counts, float32 vertex data, and per face an int32 corner
+  // count, the int32 indices, an int32 colour count and that many float32 colour components.
+  PolygonSoup read_binary(const Header& header) {
+    if (header.dimension) {
+      const std::int32_t dim = binary_int();
+      if (dim != 3) fail("binary nOFF of dimension " + std::to_string(dim) + " (only 3 is read)");
+    }
+    const std::int32_t vertices = binary_int();
+    const std::int32_t faces = binary_int();
+    binary_int();  // edge count, unused
+    if (vertices < 0 || faces < 0) fail("binary OFF with a negative vertex or face count");
+    const int h = header.homogeneous ? 1 : 0;
+    const int per_vertex = 3 + h + (header.normal ? 3 + h : 0) + (header.colour ? 4 : 0) +
+                           (header.texture ? 2 + h : 0);
+    PolygonSoup soup;
+    soup.points.reserve(capped(static_cast<std::uint64_t>(vertices)));
+    std::vector<float> values(static_cast<std::size_t>(per_vertex));
+    for (std::int32_t v = 0; v < vertices; ++v) {
+      for (float& value : values) value = binary_float();
+      const double w = header.homogeneous ? values[3] : 1.0;
+      soup.points.push_back({values[0] / w, values[1] / w, values[2] / w});
+    }
+    soup.polygons.reserve(capped(static_cast<std::uint64_t>(faces)));
+    for (std::int32_t f = 0; f < faces; ++f) {
+      const std::int32_t corners = binary_int();
+      if (corners < 0 || static_cast<std::uint64_t>(corners) > file_size_ / 4)
+        fail("binary OFF face " + std::to_string(f) + " announces " + std::to_string(corners) +
+             " corners");
+      std::vector<std::size_t> polygon(static_cast<std::size_t>(corners));
+      for (std::size_t& corner : polygon) {
+        const std::int32_t id = binary_int();
+        if (id < 0 || id >= vertices) out_of_range(static_cast<std::uint64_t>(f), id, vertices);
+        corner = static_cast<std::size_t>(id);
+      }
+      const std::int32_t colours = binary_int();
+      if (colours < 0 || colours > 4)
+        fail("binary OFF face " + std::to_string(f) + " has " + std::to_string(colours) +
+             " colour components (at most 4)");
+      for (std::int32_t c = 0; c < colours; ++c) binary_float();
+      soup.polygons.push_back(std::move(polygon));
+    }
+    return soup;
+  }
+
+  std::uint32_t binary_word() {
+    unsigned char bytes[4];
+    if (!in_.read(reinterpret_cast<char*>(bytes), 4))
+      fail("truncated binary OFF data: the file ends early");
+    return std::uint32_t{bytes[0]} << 24 | std::uint32_t{bytes[1]} << 16 |
+           std::uint32_t{bytes[2]} << 8 | std::uint32_t{bytes[3]};
+  }
+  std::int32_t binary_int() { return static_cast<std::int32_t>(binary_word()); }
+  float binary_float() { return std::bit_cast<float>(binary_word()); }
+
+  // A count from the header reserves no more than the file could hold, so that a corrupt count
+  // fails on the missing data instead of allocating gigabytes.
+  std::size_t capped(std::uint64_t n) const {
+    return static_cast<std::size_t>(std::min<std::uint64_t>(n, file_size_ / 4 + 1));
+  }
+
+  std::string first_token() const { return tokens_.empty() ? "" : tokens_.front(); }
+
+  [[noreturn]] void truncated(std::uint64_t vertices, std::uint64_t faces, std::uint64_t read_v,
+                              std::uint64_t read_f) const {
+    fail("truncated OFF data: the header announces " + std::to_string(vertices) + " vertices and " +
+         std::to_string(faces) + " faces, the file ends after " + std::to_string(read_v) +
+         " vertices and " + std::to_string(read_f) + " faces");
+  }
+
+  [[noreturn]] void out_of_range(std::uint64_t f, long long id, std::uint64_t vertices) const {
+    fail("face " + std::to_string(f) + " references vertex " + std::to_string(id) +
+         ", out of range (the file has " + std::to_string(vertices) + " vertices)");
+  }
+
+  [[noreturn]] void fail_here(const std::string& problem) const {
+    input_problem(path_, line_number_, problem);
+  }
+  [[noreturn]] void fail(const std::string& problem) const { input_problem(path_, problem); }
+
+  const std::filesystem::path& path_;
+  std::istream& in_;
+  std::uintmax_t file_size_;
+  std::string line_;
+  std::vector<std::string> tokens_;
+  std::size_t used_ = 0;  // tokens of the current line consumed by count()
+  std::size_t line_number_ = 0;
+};
+
+}  // namespace
+
+PolygonSoup read_off(const std::filesystem::path& path, std::istream& in,
+                     std::uintmax_t file_size) {
+  return OffReader(path, in, file_size).read();
+}
+
+}  // namespace cvtmesh
