@@ -265,6 +265,32 @@ TEST(CliRvd, JsonReportTilesTheSurface) {
   EXPECT_GT(j["polygons"].get<int>(), 2304);
 }
 
+// Issue 22: the commands that measure work in any units, like remesh (at 2^600 quality --ref
+// crashed with SIGFPE, and rvd refused both scales: "cannot sample a surface of zero area").
+TEST(Cli, QualityAndRvdGiveTheSameFiguresAtAnyScale) {
+  TempDir dir;
+  auto figures = [&](int k) {
+    write_mesh(dir / "a.off", scaled_by_power_of_two(transformed(icosphere(3), 1.01), k));
+    write_mesh(dir / "b.off", scaled_by_power_of_two(icosphere(3), k));
+    const CliRun q = run_cli(dir, "quality --json --samples 3000 " + quoted(dir / "a.off") +
+                                      " --ref " + quoted(dir / "b.off"));
+    const CliRun r = run_cli(dir, "rvd --json --seeds 200 " + quoted(dir / "b.off"));
+    EXPECT_EQ(q.code, 0) << "2^" << k << ": " << q.err;
+    EXPECT_EQ(r.code, 0) << "2^" << k << ": " << r.err;
+    return std::pair{nlohmann::json::parse(q.out), nlohmann::json::parse(r.out)};
+  };
+  const auto [quality, rvd] = figures(0);
+  EXPECT_GT(quality["hausdorff_max_pct"].get<double>(), 0.1);
+  EXPECT_LT(rvd["area_relative_difference"].get<double>(), 1e-12);
+  for (const int k : {-600, 600}) {
+    const auto [q, r] = figures(k);
+    for (const char* key : {"hausdorff_max_pct", "hausdorff_mean_pct", "q_min", "same_topology"})
+      EXPECT_EQ(q[key], quality[key]) << key << " at 2^" << k;
+    for (const char* key : {"polygons", "area_relative_difference", "exact_fallbacks"})
+      EXPECT_EQ(r[key], rvd[key]) << key << " at 2^" << k;
+  }
+}
+
 TEST(CliRvd, SameEnergyOnAnyThreadCountAndForTheSameSeed) {
   TempDir dir;
   write_mesh(dir / "sphere.ply", icosphere(4));

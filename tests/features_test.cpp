@@ -201,6 +201,20 @@ TEST(RemeshFeatures, CubeKeepsCornersCreasesAndPlanarFaces) {
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(cube)));
 }
 
+// Issue 22: feature distances are measured at about unit size, so any units give the same ones.
+TEST(RemeshFeatures, FeatureDistanceOfAShapeScaledByAPowerOfTwoIsTheSameScaled) {
+  const TriangleMesh in = testing::cube(4), out = testing::transformed(in, 1.02, {0.01, 0, 0});
+  const std::vector<Edge> edges = detect_features(in, {}).edges;
+  const FeatureDistance unit = feature_distance(in, edges, out, edges);
+  ASSERT_GT(unit.max, 0.01);
+  for (const int k : {-600, -20, 20, 600}) {
+    const FeatureDistance d = feature_distance(scaled_by_power_of_two(in, k), edges,
+                                               scaled_by_power_of_two(out, k), edges);
+    EXPECT_EQ(d.max, std::ldexp(unit.max, k)) << "2^" << k;
+    EXPECT_EQ(d.mean, std::ldexp(unit.mean, k)) << "2^" << k;
+  }
+}
+
 TEST(RemeshFeatures, WithoutFeaturesTheCubeLosesItsCorners) {
   // The documented switch does what it says: the corners are no longer output vertices.
   const TriangleMesh cube = testing::cube(8);

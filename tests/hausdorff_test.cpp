@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <cmath>
+
 #include "cvtmesh/hausdorff.hpp"
 #include "support/shapes.hpp"
 
@@ -28,6 +30,22 @@ TEST(Hausdorff, UnitSphereAgainstSphereScaledByOnePercent) {
   EXPECT_GE(h.rms, h.mean);
   EXPECT_NEAR(h.max_pct(), 100 * 0.01 / bounding_box(unit).diagonal(), 1e-7);
   EXPECT_EQ(h.samples_per_surface, 50'000u);
+}
+
+// Issue 22: any units. At 2^600 squared distances overflowed and CGAL's exact fallback raised
+// SIGFPE; at 2^-600 they underflowed to a NaN percentage. Both meshes are worked on scaled by one
+// power of two, exactly, so the figures are the unit ones scaled, bit for bit.
+TEST(Hausdorff, AShapeScaledByAPowerOfTwoGivesTheSameDistancesScaled) {
+  const TriangleMesh a = transformed(icosphere(3), 1.01, {0.05, 0, 0}), b = icosphere(3);
+  const HausdorffReport unit = hausdorff_distance(a, b, {.samples = 3000});
+  ASSERT_GT(unit.max, 0.01);
+  for (const int k : {-600, -20, 20, 600}) {
+    const HausdorffReport h = hausdorff_distance(scaled_by_power_of_two(a, k),
+                                                 scaled_by_power_of_two(b, k), {.samples = 3000});
+    EXPECT_EQ(h.max, std::ldexp(unit.max, k)) << "2^" << k;
+    EXPECT_EQ(h.mean, std::ldexp(unit.mean, k)) << "2^" << k;
+    EXPECT_EQ(h.max_pct(), unit.max_pct()) << "2^" << k;
+  }
 }
 
 TEST(Hausdorff, DisplacedBumpIsSeenFromTheReferenceSide) {

@@ -164,9 +164,7 @@ TEST(RemeshScale, AShapeScaledByAPowerOfTwoGivesTheSameOutputScaled) {
   const RemeshResult unit = remesh(shape, s);
   ASSERT_GT(unit.mesh.vertices.size(), 100u);
   for (const int k : {-600, -20, 20, 600}) {
-    TriangleMesh scaled = shape;
-    for (Vec3& v : scaled.vertices)
-      v = {std::ldexp(v.x, k), std::ldexp(v.y, k), std::ldexp(v.z, k)};
+    const TriangleMesh scaled = scaled_by_power_of_two(shape, k);
     RemeshSettings sk = s;
     sk.edge_length = std::ldexp(s.edge_length, k);
     const RemeshResult r = remesh(scaled, sk);
@@ -176,7 +174,7 @@ TEST(RemeshScale, AShapeScaledByAPowerOfTwoGivesTheSameOutputScaled) {
     for (std::size_t i = 0; i < r.mesh.vertices.size(); ++i) {
       const Vec3& a = r.mesh.vertices[i];
       const Vec3& b = unit.mesh.vertices[i];
-      differing += a != Vec3{std::ldexp(b.x, k), std::ldexp(b.y, k), std::ldexp(b.z, k)};
+      differing += a != scaled_by_power_of_two(b, k);
     }
     EXPECT_EQ(differing, 0u) << "2^" << k;
     const QualityReport q = measure_quality(r.mesh);

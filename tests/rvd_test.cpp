@@ -130,6 +130,18 @@ TraversalStats expect_tiling(const TriangleMesh& mesh, const std::vector<Vec3>& 
   return stats;
 }
 
+// Issue 22: at 2^-600 triangle areas underflow; sampling works at about unit size.
+TEST(Sampling, AShapeScaledByAPowerOfTwoGivesTheSameSamplesScaled) {
+  const TriangleMesh m = torus(1, 0.4, 24, 12);
+  const std::vector<Vec3> unit = sample_surface(m, 100, 3);
+  for (const int k : {-600, -20, 20, 600}) {
+    const std::vector<Vec3> points = sample_surface(scaled_by_power_of_two(m, k), 100, 3);
+    ASSERT_EQ(points.size(), unit.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      EXPECT_EQ(points[i], scaled_by_power_of_two(unit[i], k)) << "2^" << k << ", sample " << i;
+  }
+}
+
 TEST(Rvd, CellsTileGeneratedSurfaces) {
   for (const TriangleMesh& m : {icosphere(3), torus(2, 0.5, 40, 20), cube(4), disk(6, 24)}) {
     expect_tiling(m, sample_surface(m, 300, 7));

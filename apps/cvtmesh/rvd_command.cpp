@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "commands.hpp"
 #include "cvtmesh/errors.hpp"
@@ -40,6 +41,14 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// `unit` × 2^exponent, as a number where a double holds it, else as "mantissa×2^exponent" (the
+// area of a mesh at 2^-600 underflows, at 2^600 overflows).
+std::string scaled_text(double unit, int exponent, int digits) {
+  const double value = std::ldexp(unit, exponent);
+  if (unit == 0 || std::isnormal(value)) return fmt::format("{:.{}g}", value, digits);
+  return fmt::format("{:.{}g}×2^{}", unit, digits, exponent);
+}
+
 int run_rvd(const RvdOptions& o) {
   const auto threads = limit_threads(o.threads);
   for (const std::string& out : {o.cells, o.rdt})
@@ -50,11 +59,19 @@ int run_rvd(const RvdOptions& o) {
   if (mesh.triangles.empty()) throw InputError(o.mesh + ": no triangle of non-zero area");
   // The traversal walks from vertex to vertex and triangle to triangle: in spatial order, those
   // walks stay short whatever the file's order (the figures here are the surface's alone).
-  mesh = spatially_sorted(mesh).mesh;
+  // And scaled by a power of two to about unit size, exactly (issue 22): areas and energies of
+  // a mesh in any units neither underflow nor overflow; they are scaled back when reported.
+  const int exponent = size_exponent(mesh);
+  mesh = scaled_by_power_of_two(spatially_sorted(mesh).mesh, -exponent);
 
   Stopwatch clock;
-  std::vector<Vec3> seeds =
-      o.seeds_file.empty() ? sample_surface(mesh, o.seeds, o.seed) : read_points(o.seeds_file);
+  std::vector<Vec3> seeds;
+  if (o.seeds_file.empty()) {
+    seeds = sample_surface(mesh, o.seeds, o.seed);
+  } else {
+    seeds = read_points(o.seeds_file);
+    for (Vec3& p : seeds) p = scaled_by_power_of_two(p, -exponent);
+  }
   const double sampling = clock.lap();
   const RestrictedVoronoiDiagram rvd(mesh, std::move(seeds));
   clock.lap();
@@ -67,15 +84,21 @@ int run_rvd(const RvdOptions& o) {
   if (!o.cells.empty()) sinks.push_back(&cells);
   const TraversalStats stats = rvd.traverse(sinks);
   const double traversal = clock.lap();
-  if (!o.cells.empty()) cells.write_ply(o.cells);
+  if (!o.cells.empty()) cells.write_ply(o.cells, exponent);
   if (!o.rdt.empty()) {
-    TriangleMesh triangulation = rdt.result();
+    TriangleMesh triangulation = scaled_by_power_of_two(rdt.result(), exponent);
     repair_mesh(triangulation);  // drops the seeds whose cell is empty
     write_mesh(o.rdt, triangulation);
   }
 
+  // Areas scale by 4^k and the energy (∫ squared distance dA) by 16^k; the relative difference
+  // is taken at unit size, where neither can have overflowed.
   const CellIntegrals& integrals = integrator.result();
-  const double area = surface_area(mesh);
+  const double unit_area = surface_area(mesh);
+  const double area = std::ldexp(unit_area, 2 * exponent);
+  const double cells_area = std::ldexp(integrals.total_mass, 2 * exponent);
+  const double energy = std::ldexp(integrals.total_energy, 4 * exponent);
+  const double relative_difference = std::abs(integrals.total_mass - unit_area) / unit_area;
   const RvdBuildTimes& build = rvd.build_times();
   const double total = sampling + build.kdtree_seconds + build.neighbors_seconds + traversal;
   const std::size_t used_threads =
@@ -86,8 +109,9 @@ int run_rvd(const RvdOptions& o) {
     j["triangles"] = mesh.triangles.size();
     j["polygons"] = stats.polygons;
     j["surface_area"] = area;
-    j["cells_area_sum"] = integrals.total_mass;
-    j["energy"] = integrals.total_energy;
+    j["cells_area_sum"] = cells_area;
+    j["area_relative_difference"] = relative_difference;
+    j["energy"] = energy;
     j["predicates"] = stats.predicates;
     j["exact_fallbacks"] = stats.exact_fallbacks;
     j["perturbed_ties"] = stats.perturbed_ties;
@@ -102,15 +126,17 @@ int run_rvd(const RvdOptions& o) {
   } else {
     fmt::print(
         "{}: {} seeds, {} triangles -> {} polygons\n"
-        "  area      cells {:.12g}   surface {:.12g}   relative difference {:.2e}\n"
-        "  energy    {:.9g}\n"
+        "  area      cells {}   surface {}   relative difference {:.2e}\n"
+        "  energy    {}\n"
         "  exact     {} of {} predicates went exact, {} ties decided by perturbation\n"
         "  time      kd-tree {:.3f}s   neighbours {:.3f}s   rvd {:.3f}s   total {:.3f}s ({} "
         "threads)\n",
-        o.mesh, rvd.seeds().size(), mesh.triangles.size(), stats.polygons, integrals.total_mass,
-        area, std::abs(integrals.total_mass - area) / area, integrals.total_energy,
-        stats.exact_fallbacks, stats.predicates, stats.perturbed_ties, build.kdtree_seconds,
-        build.neighbors_seconds, traversal, total, used_threads);
+        o.mesh, rvd.seeds().size(), mesh.triangles.size(), stats.polygons,
+        scaled_text(integrals.total_mass, 2 * exponent, 12),
+        scaled_text(unit_area, 2 * exponent, 12), relative_difference,
+        scaled_text(integrals.total_energy, 4 * exponent, 9), stats.exact_fallbacks,
+        stats.predicates, stats.perturbed_ties, build.kdtree_seconds, build.neighbors_seconds,
+        traversal, total, used_threads);
   }
   return kOk;
 }

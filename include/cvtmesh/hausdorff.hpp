@@ -32,7 +32,11 @@ struct HausdorffReport {
   double rms_pct() const { return 100 * rms / reference_diagonal; }
 };
 
+// The same distances for the meshes scaled by 2^exponent (see scaled_by_power_of_two).
+HausdorffReport scaled_by_power_of_two(HausdorffReport report, int exponent);
+
 // `b` is the reference (its diagonal normalises the percentages). Both meshes must be non-empty.
+// Computed on both meshes scaled by the same power of two to about unit size, so any units work.
 HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
                                    const HausdorffSettings& settings = {});
 
@@ -44,7 +48,7 @@ namespace cvtmesh {
 // sampled at spacing at most 1/4000 of the bbox diagonal (and at its ends), each sample's
 // distance to the nearest output feature edge. Max and mean (over samples) are absolute; both
 // are +infinity when there are input features but no output feature edges, 0 when there are
-// no input features.
+// no input features. Computed at about unit size, like hausdorff_distance.
 struct FeatureDistance {
   double max = 0, mean = 0;
 };

@@ -45,4 +45,17 @@ struct SpatiallySorted {
 };
 SpatiallySorted spatially_sorted(const TriangleMesh& mesh);
 
+// Scale invariance (issue 22): cvtmesh works on a mesh scaled by a power of two to about unit
+// size. Multiplying by a power of two is exact in floating point (barring subnormals), so
+// corners keep their coordinates bit for bit through the scaling and back, and a shape in
+// nanometres or in light years is handled as the same shape in metres: areas and squared
+// distances neither underflow nor overflow.
+//
+// The exponent e of the mesh's largest bounding-box extent (over the vertices its triangles
+// use): that extent is in [2^e, 2^(e+1)). 0 for a mesh without extent.
+int size_exponent(const TriangleMesh& mesh);
+// `mesh` (a point) with every coordinate multiplied by 2^exponent.
+TriangleMesh scaled_by_power_of_two(TriangleMesh mesh, int exponent);
+Vec3 scaled_by_power_of_two(const Vec3& p, int exponent);
+
 }  // namespace cvtmesh

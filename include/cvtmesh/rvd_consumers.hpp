@@ -68,8 +68,9 @@ class CellCollector : public PolygonSink {
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
   // Binary PLY: one face per polygon, coloured by its seed (neighbouring cells rarely share a
-  // colour). Written atomically.
-  void write_ply(const std::filesystem::path& path) const;
+  // colour), its coordinates multiplied by 2^exponent (for a diagram of a mesh scaled by
+  // scaled_by_power_of_two). Written atomically.
+  void write_ply(const std::filesystem::path& path, int exponent = 0) const;
   std::size_t polygon_count() const { return seeds_.size(); }
 
  private:

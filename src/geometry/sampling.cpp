@@ -12,6 +12,13 @@
 namespace cvtmesh {
 
 std::vector<Vec3> sample_surface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
+  // Triangle areas at 2^-600 underflow to zero: sampled at about unit size, scaled back.
+  const int exponent = size_exponent(mesh);
+  if (exponent != 0) {
+    std::vector<Vec3> points = sample_surface(scaled_by_power_of_two(mesh, -exponent), count, seed);
+    for (Vec3& p : points) p = scaled_by_power_of_two(p, exponent);
+    return points;
+  }
   const AreaSampler sampler(mesh, seed);
   if (!sampler.has_area()) throw InvalidArgument("cannot sample a surface of zero area");
   std::vector<Vec3> points(count);

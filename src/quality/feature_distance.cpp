@@ -27,14 +27,10 @@ Kernel::Point_3 point(const Vec3& v) {
   return {v.x, v.y, v.z};
 }
 
-}  // namespace
-
-FeatureDistance feature_distance(const TriangleMesh& input, const std::vector<Edge>& input_edges,
-                                 const TriangleMesh& output,
-                                 const std::vector<Edge>& output_edges) {
-  if (input_edges.empty()) return {};
-  constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  if (output_edges.empty()) return {kInfinity, kInfinity};
+FeatureDistance unit_feature_distance(const TriangleMesh& input,
+                                      const std::vector<Edge>& input_edges,
+                                      const TriangleMesh& output,
+                                      const std::vector<Edge>& output_edges) {
   std::vector<Segment> segments;
   for (const Edge& e : output_edges)
     segments.emplace_back(point(output.vertices[e[0]]), point(output.vertices[e[1]]));
@@ -64,6 +60,23 @@ FeatureDistance feature_distance(const TriangleMesh& input, const std::vector<Ed
   for (double x : d) result.max = std::max(result.max, x), result.mean += x;
   result.mean /= static_cast<double>(d.size());
   return result;
+}
+
+}  // namespace
+
+FeatureDistance feature_distance(const TriangleMesh& input, const std::vector<Edge>& input_edges,
+                                 const TriangleMesh& output,
+                                 const std::vector<Edge>& output_edges) {
+  if (input_edges.empty()) return {};
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  if (output_edges.empty()) return {kInfinity, kInfinity};
+  // As in hausdorff_distance: squared distances at about unit size, whatever the units.
+  const int exponent = size_exponent(input);
+  if (exponent == 0) return unit_feature_distance(input, input_edges, output, output_edges);
+  const FeatureDistance unit =
+      unit_feature_distance(scaled_by_power_of_two(input, -exponent), input_edges,
+                            scaled_by_power_of_two(output, -exponent), output_edges);
+  return {std::ldexp(unit.max, exponent), std::ldexp(unit.mean, exponent)};
 }
 
 std::size_t corners_kept(const TriangleMesh& input, const Features& features,

@@ -96,11 +96,25 @@ HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
   return r;
 }
 
+HausdorffReport scaled_by_power_of_two(HausdorffReport h, int exponent) {
+  for (double* d : {&h.a_to_b.max, &h.a_to_b.mean, &h.a_to_b.rms, &h.b_to_a.max, &h.b_to_a.mean,
+                    &h.b_to_a.rms, &h.max, &h.mean, &h.rms, &h.reference_diagonal})
+    *d = std::ldexp(*d, exponent);
+  return h;
+}
+
 HausdorffReport hausdorff_distance(const TriangleMesh& a, const TriangleMesh& b,
                                    const HausdorffSettings& settings) {
   if (a.triangles.empty() || b.triangles.empty())
     throw InvalidArgument("Hausdorff distance needs two non-empty meshes");
-  return hausdorff_distance(a, b, SurfaceProjector(b), settings);
+  // At 2^600 squared distances overflow and CGAL's exact fallback fails on the infinities (GMP
+  // raised SIGFPE); at 2^-600 they underflow. One exponent for both keeps them comparable.
+  const int exponent = std::max(size_exponent(a), size_exponent(b));
+  if (exponent == 0) return hausdorff_distance(a, b, SurfaceProjector(b), settings);
+  const TriangleMesh unit_a = scaled_by_power_of_two(a, -exponent);
+  const TriangleMesh unit_b = scaled_by_power_of_two(b, -exponent);
+  return scaled_by_power_of_two(
+      hausdorff_distance(unit_a, unit_b, SurfaceProjector(unit_b), settings), exponent);
 }
 
 }  // namespace cvtmesh

@@ -4,7 +4,6 @@
 #include <numbers>
 
 #include "cvtmesh/quality.hpp"
-#include "geometry/unit_scale.hpp"
 
 namespace cvtmesh {
 

@@ -17,7 +17,6 @@
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
-#include "geometry/unit_scale.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
@@ -69,7 +68,7 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
   return traced;
 }
 
-// requested_vertex_count for a mesh of about unit size (see geometry/unit_scale.hpp).
+// requested_vertex_count for a mesh of about unit size (see size_exponent in cvtmesh/mesh.hpp).
 std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
   const int given = (s.vertices > 0) + (s.edge_length != 0) + (s.edge_length_rel != 0);
   if (given != 1)
@@ -230,8 +229,7 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
 RemeshSettings scaled_settings(RemeshSettings s, int exponent) {
   s.edge_length = std::ldexp(s.edge_length, exponent);
   s.features.scale = std::ldexp(s.features.scale, exponent);
-  for (Vec3& p : s.initial_seeds)
-    p = {std::ldexp(p.x, exponent), std::ldexp(p.y, exponent), std::ldexp(p.z, exponent)};
+  for (Vec3& p : s.initial_seeds) p = scaled_by_power_of_two(p, exponent);
   return s;
 }
 
@@ -256,12 +254,7 @@ RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   RemeshResult r =
       remesh_unit(scaled_by_power_of_two(input, -exponent), scaled_settings(settings, -exponent));
   r.mesh = scaled_by_power_of_two(std::move(r.mesh), exponent);
-  if (r.hausdorff) {
-    HausdorffReport& h = *r.hausdorff;
-    for (double* d : {&h.a_to_b.max, &h.a_to_b.mean, &h.a_to_b.rms, &h.b_to_a.max, &h.b_to_a.mean,
-                      &h.b_to_a.rms, &h.max, &h.mean, &h.rms, &h.reference_diagonal})
-      *d = std::ldexp(*d, exponent);
-  }
+  if (r.hausdorff) r.hausdorff = scaled_by_power_of_two(*r.hausdorff, exponent);
   return r;
 }
 

@@ -39,7 +39,7 @@ void put(std::ostream& out, T value) {
 
 }  // namespace
 
-void CellCollector::write_ply(const std::filesystem::path& path) const {
+void CellCollector::write_ply(const std::filesystem::path& path, int exponent) const {
   io::write_atomically(path, true, [&](std::ostream& out) {
     out << "ply\nformat binary_little_endian 1.0\ncomment cvtmesh restricted Voronoi cells\n"
         << fmt::format("element vertex {}\n", points_.size())
@@ -47,7 +47,10 @@ void CellCollector::write_ply(const std::filesystem::path& path) const {
         << fmt::format("element face {}\n", sizes_.size())
         << "property list uchar int vertex_indices\n"
         << "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
-    for (const Vec3& p : points_) put(out, p.x), put(out, p.y), put(out, p.z);
+    for (const Vec3& point : points_) {
+      const Vec3 p = scaled_by_power_of_two(point, exponent);
+      put(out, p.x), put(out, p.y), put(out, p.z);
+    }
     std::int32_t next = 0;
     for (std::size_t f = 0; f < sizes_.size(); ++f) {
       if (sizes_[f] > 255) return false;  // the list length is a uchar
