@@ -41,13 +41,12 @@ class CellPieceCollector : public PolygonSink {
   struct Polygon {
     Index seed, triangle;
     double area;
-    Vec3 moment;
-    Vec3 centre;  // its centroid; a vertex of it if it has no area
+    Vec3 moment;  // area × centroid; for a polygon without area, a vertex of it instead
   };
   struct Side {
     Index seed;
     std::array<Index, 2> edge;  // input vertex ids, the smaller first
-    std::size_t polygon;
+    Index polygon;              // 32 bits: sides are most of the collector's memory
   };
   const TriangleMesh& surface_;
   std::vector<std::vector<Polygon>> polygon_chunks_;
