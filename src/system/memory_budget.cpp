@@ -15,13 +15,13 @@ namespace cvtmesh {
 namespace {
 
 // bench/scale.py, peak resident memory of `cvtmesh remesh` (reading the input included): a
-// 2M-triangle torus to 100k vertices 1,699 MB, igea (269k triangles) to 500k 949 MB, one
-// triangle to 100k 208 MB, 10,000 icosahedra (200k triangles) to 120k 355 MB. A fit gives about
-// 780 bytes per triangle, 1,420 per seed and 73 MB; rounded up, so that the check refuses only
+// 2M-triangle torus to 100k vertices 1,272 MB, igea (269k triangles) to 500k 784 MB, one
+// triangle to 100k 208 MB, 10,000 icosahedra (200k triangles) to 120k 268 MB. A fit gives about
+// 560 bytes per triangle, 1,120 per seed and 100 MB; rounded up, so that the check refuses only
 // what would not fit.
-constexpr std::uint64_t kBytesPerTriangle = 900;
-constexpr std::uint64_t kBytesPerSeed = 1500;
-constexpr std::uint64_t kBaseBytes = 80ull << 20;  // libraries, thread pools, buffers
+constexpr std::uint64_t kBytesPerTriangle = 650;
+constexpr std::uint64_t kBytesPerSeed = 1300;
+constexpr std::uint64_t kBaseBytes = 110ull << 20;  // libraries, thread pools, buffers
 
 // A "Key: value kB" line of a /proc file, in bytes.
 std::optional<std::uint64_t> proc_field(const char* file, const std::string& key) {
