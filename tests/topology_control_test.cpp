@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
+#include <map>
 
 #include "cvt/cell_islands.hpp"
 #include "cvtmesh/errors.hpp"
@@ -385,6 +387,68 @@ TEST(HardCases, ATinyComponentBesideALargeOne) {
 TEST(HardCases, DISABLED_ATorusWhoseHoleIsSmallerThanTheEdgeLength) {
   // Major radius 1, tube radius 0.95: the hole is 0.1 across, the edge length about 0.25.
   expect_valid_remesh(torus(1.0, 0.95, 96, 48), 600);
+}
+
+// Three square sheets meeting along the line x = z = 0, a T in section: each n×n grid, vertices
+// shared along the junction, whose n edges are used by three triangles each.
+TriangleMesh three_sheet_junction(int n) {
+  TriangleMesh m;
+  std::map<Vec3, Index> id;
+  auto vertex = [&](const Vec3& p) {
+    const auto [it, added] = id.emplace(p, static_cast<Index>(m.vertices.size()));
+    if (added) m.vertices.push_back(p);
+    return it->second;
+  };
+  const std::function<Vec3(double, double)> sheets[] = {[](double u, double v) {
+                                                          return Vec3{-1 + u, -1 + 2 * v, 0};
+                                                        },
+                                                        [](double u, double v) {
+                                                          return Vec3{u, -1 + 2 * v, 0};
+                                                        },
+                                                        [](double u, double v) {
+                                                          return Vec3{0, -1 + 2 * u, v};
+                                                        }};
+  for (const auto& at : sheets)
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double u0 = double(i) / n, u1 = double(i + 1) / n;
+        const double v0 = double(j) / n, v1 = double(j + 1) / n;
+        const Index a = vertex(at(u0, v0)), b = vertex(at(u1, v0)), c = vertex(at(u1, v1)),
+                    d = vertex(at(u0, v1));
+        m.triangles.push_back({a, b, c});
+        m.triangles.push_back({a, c, d});
+      }
+  return m;
+}
+
+// Issue 18: where the input is non-manifold, the output keeps those edges as features and adds
+// no others, and topology control takes them for no defect. Before, its rounds refined around
+// them, to no avail: 57 seeds added at 300 vertices, and triple_vierbein.obj took 12.9 s at 5k
+// instead of 5.0 s (the same output).
+TEST(NonManifoldInput, ASheetJunctionIsKeptWithoutRefiningAroundIt) {
+  const TriangleMesh tee = three_sheet_junction(8);
+  const TopologyReport in = analyze_topology(tee);
+  ASSERT_EQ(in.nonmanifold_edges, 8u);
+  RemeshSettings s;
+  s.vertices = 300;
+  const RemeshResult r = remesh(tee, s);
+  const TopologyReport out = analyze_topology(r.mesh);
+  EXPECT_TRUE(same_topology(out, in));
+  EXPECT_EQ(out.nonmanifold_vertices, 0u);
+  EXPECT_GT(out.nonmanifold_edges, 8u);  // the junction, at the output's spacing
+  std::map<Edge, int> uses;
+  for (const Triangle& t : r.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++uses[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  for (const auto& [e, count] : uses) {
+    if (count < 3) continue;
+    for (const Index v : e)  // on the junction line, exactly (curve seeds lie on its edges)
+      EXPECT_TRUE(r.mesh.vertices[v].x == 0 && r.mesh.vertices[v].z == 0)
+          << "a non-manifold edge off the junction at vertex " << v;
+  }
+  EXPECT_EQ(r.feature_edges_missing, 0u);
+  EXPECT_EQ(r.islands_seeded + r.seeds_refined, 0u);
+  EXPECT_EQ(r.mesh.vertices.size(), 300u);
 }
 
 TEST(HardCases, ANeedle) {

@@ -25,7 +25,9 @@ struct EdgeUse {
 }  // namespace
 
 ManifoldDefects find_manifold_defects(std::size_t vertices, const std::vector<Triangle>& tris,
-                                      const std::vector<bool>& may_bound, bool folds) {
+                                      const std::vector<bool>& may_bound, bool folds,
+                                      const std::vector<bool>& may_branch) {
+  auto branches = [&](Index v) { return !may_branch.empty() && may_branch[v]; };
   std::vector<EdgeUse> uses;
   uses.reserve(3 * tris.size());
   for (std::size_t t = 0; t < tris.size(); ++t) {
@@ -55,10 +57,11 @@ ManifoldDefects find_manifold_defects(std::size_t vertices, const std::vector<Tr
     const bool folded = folds && count == 2 && uses[i].forward == uses[i + 1].forward;
     const bool stray =
         count == 1 && !may_bound.empty() && !(may_bound[uses[i].a] && may_bound[uses[i].b]);
-    if (count >= 3 || folded || stray)
+    const bool branching = count >= 3 && !(branches(uses[i].a) && branches(uses[i].b));
+    if (branching || folded || stray)
       for (std::size_t k = i; k < j; ++k) d.triangle[uses[k].triangle] = true;
-    if (count >= 3) d.vertex[uses[i].a] = d.vertex[uses[i].b] = true;
-    d.nonmanifold_edges += count >= 3;
+    if (branching) d.vertex[uses[i].a] = d.vertex[uses[i].b] = true;
+    d.nonmanifold_edges += branching;
     d.folded_edges += folded;
     d.stray_boundary_edges += stray;
     if (count == 2)
@@ -80,7 +83,7 @@ ManifoldDefects find_manifold_defects(std::size_t vertices, const std::vector<Tr
       several = several || classes[j].second != classes[i].second;
       ++j;
     }
-    if (several) {
+    if (several && !branches(classes[i].first)) {
       ++d.nonmanifold_vertices;
       d.vertex[classes[i].first] = true;
       for (std::size_t k = i; k < j; ++k) d.triangle[classes[k].second / 3] = true;

@@ -21,7 +21,11 @@ struct ManifoldDefects {
 
 // `vertices`: the vertex count. `may_bound`: per vertex, whether a boundary edge may end there
 // (empty: everywhere). `folds`: whether folds are defects (not for a non-orientable surface).
+// `may_branch`: per vertex, whether an edge of three or more triangles may end there, and the
+// vertex have several fans (empty: nowhere), for the output of an input that is non-manifold
+// itself; such edges and vertices are not defects and are not counted.
 ManifoldDefects find_manifold_defects(std::size_t vertices, const std::vector<Triangle>& triangles,
-                                      const std::vector<bool>& may_bound, bool folds);
+                                      const std::vector<bool>& may_bound, bool folds,
+                                      const std::vector<bool>& may_branch = {});
 
 }  // namespace cvtmesh

@@ -53,9 +53,9 @@ class CrossingCollector : public PolygonSink {
 }  // namespace
 
 OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<bool>& may_bound,
-                                  bool folds) {
+                                  bool folds, const std::vector<bool>& may_branch) {
   const ManifoldDefects m =
-      find_manifold_defects(rdt.vertices.size(), rdt.triangles, may_bound, folds);
+      find_manifold_defects(rdt.vertices.size(), rdt.triangles, may_bound, folds, may_branch);
   OutputDefects d{
       {}, m.nonmanifold_edges, m.nonmanifold_vertices, m.stray_boundary_edges, m.folded_edges};
   for (std::size_t t = 0; t < rdt.triangles.size(); ++t)

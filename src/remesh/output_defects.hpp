@@ -23,10 +23,12 @@ struct OutputDefects {
 };
 
 // The defects of `rdt` (vertices: the seeds, by id). A boundary edge is a defect unless both its
-// ends have may_bound set (seeds on the input's boundary curves). Folds count only with `folds`
-// (a non-orientable input has them wherever its output closes up).
+// ends have may_bound set (seeds on the input's boundary curves), an edge of three or more
+// triangles unless both have may_branch set (seeds on the input's own non-manifold curves; empty:
+// none). Folds count only with `folds` (a non-orientable input has them wherever its output
+// closes up).
 OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<bool>& may_bound,
-                                  bool folds = true);
+                                  bool folds = true, const std::vector<bool>& may_branch = {});
 
 // Where topology control adds seeds, from one traversal of the seeds' RVD:
 struct DefectSeeds {
