@@ -132,8 +132,10 @@ std::vector<bool> branch_seeds(const MendContext& m, const std::vector<Vec3>& se
     curve_branches[c] = v.size() >= 2 && branching(v[0], v[1]);
   }
   std::vector<bool> branch_vertex(m.surface.vertices.size(), false);
-  for (const Edge& e : uses)
-    if (branching(e[0], e[1])) branch_vertex[e[0]] = branch_vertex[e[1]] = true;
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {  // runs of equal edges
+    while (j < uses.size() && uses[j] == uses[i]) ++j;
+    if (j - i >= 3) branch_vertex[uses[i][0]] = branch_vertex[uses[i][1]] = true;
+  }
   std::vector<bool> may(vertices, false);
   for (std::size_t s = 0; s < seeds.size(); ++s)
     may[s] =
