@@ -27,11 +27,9 @@ namespace {
 
 using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 using Polygon = std::vector<std::size_t>;
-
-struct Soup {
-  std::vector<Point> points;
-  std::vector<Polygon> polygons;
-};
+// Every reader's result, OFF and PLY as read_off and read_ply give it, OBJ and STL converted
+// from CGAL's points.
+using Soup = PolygonSoup;
 
 // A binary STL is an 80-byte header, a uint32 triangle count, then 50 bytes per triangle. CGAL
 // does not say why a short file fails, so check the size here.
@@ -56,20 +54,25 @@ void check_binary_stl_size(const std::filesystem::path& path, std::istream& in,
 
 bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbose) {
   const auto np = CGAL::parameters::verbose(verbose);
+  std::vector<Point> points;
+  bool ok = false;
   switch (format) {
     case MeshFormat::obj:
-      return CGAL::IO::read_OBJ(in, soup.points, soup.polygons, np);
+      ok = CGAL::IO::read_OBJ(in, points, soup.polygons, np);
+      break;
     case MeshFormat::off:
     case MeshFormat::ply:
       break;  // read by read_off and read_ply, never by CGAL
     case MeshFormat::stl: {
       std::vector<std::array<std::size_t, 3>> triangles;
-      const bool ok = CGAL::IO::read_STL(in, soup.points, triangles, np);
+      ok = CGAL::IO::read_STL(in, points, triangles, np);
       for (const auto& t : triangles) soup.polygons.emplace_back(t.begin(), t.end());
-      return ok;
+      break;
     }
   }
-  return false;
+  soup.points.reserve(points.size());
+  for (const Point& p : points) soup.points.push_back({p.x(), p.y(), p.z()});
+  return ok;
 }
 
 std::string format_name(MeshFormat format) {
@@ -88,11 +91,10 @@ std::string format_name(MeshFormat format) {
 
 std::string non_finite_vertex(const Soup& soup) {
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
-    const Point& p = soup.points[i];
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) {
+    const auto& [x, y, z] = soup.points[i];
+    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
       std::ostringstream s;
-      s << "vertex " << i << " has a non-finite coordinate (" << p.x() << ' ' << p.y() << ' '
-        << p.z() << ')';
+      s << "vertex " << i << " has a non-finite coordinate (" << x << ' ' << y << ' ' << z << ')';
       return s.str();
     }
   }
@@ -185,7 +187,7 @@ TriangleMesh triangulate(const std::filesystem::path& path, Soup& soup, ReadRepo
     input_problem(path, "too many vertices (" + std::to_string(soup.points.size()) + ")");
   TriangleMesh mesh;
   mesh.vertices.reserve(soup.points.size());
-  for (const Point& p : soup.points) mesh.vertices.push_back({p.x(), p.y(), p.z()});
+  for (const auto& [x, y, z] : soup.points) mesh.vertices.push_back({x, y, z});
   report.polygons_in_file = soup.polygons.size();
   mesh.triangles.reserve(soup.polygons.size());
   for (const Polygon& poly : soup.polygons) {
@@ -218,11 +220,7 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   Soup soup;
   bool parsed = false;
   if (*format == MeshFormat::off || *format == MeshFormat::ply) {
-    PolygonSoup own =
-        *format == MeshFormat::off ? read_off(path, in, size) : read_ply(path, in, size);
-    soup.points.reserve(own.points.size());
-    for (const auto& p : own.points) soup.points.emplace_back(p[0], p[1], p[2]);
-    soup.polygons = std::move(own.polygons);
+    soup = *format == MeshFormat::off ? read_off(path, in, size) : read_ply(path, in, size);
     parsed = true;
   } else {
     try {
