@@ -4,8 +4,10 @@
 #include "commands.hpp"
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/repair.hpp"
+#include "cvtmesh/report.hpp"
 #include "exit_codes.hpp"
-#include "mesh_report.hpp"
+#include "topology_warnings.hpp"
 
 namespace cvtmesh::cli {
 

@@ -2,6 +2,7 @@
 // CVT energy, and optionally its cells and restricted Delaunay triangulation.
 #include <fmt/core.h>
 #include <tbb/global_control.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -10,11 +11,11 @@
 #include "commands.hpp"
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/repair.hpp"
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "exit_codes.hpp"
-#include "mesh_report.hpp"
 
 namespace cvtmesh::cli {
 

@@ -1,5 +1,6 @@
-// Shared reporting of the CLI: the JSON keys every subcommand uses for a mesh, and the
-// human-readable lines that go with them.
+// The reports cvtmesh gives of a mesh and of a remesh, as JSON and as text with the same
+// figures. The CLI prints them (`--json` or not); the Python module returns the JSON as a dict,
+// so both speak with the same keys.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -8,10 +9,10 @@
 
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
-#include "cvtmesh/repair.hpp"
+#include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
 
-namespace cvtmesh::cli {
+namespace cvtmesh {
 
 nlohmann::ordered_json mesh_json(const TopologyReport& topology, const QualityReport& quality);
 // `distance` null: not measured (its keys are null).
@@ -25,8 +26,7 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
 
 // The full report of a mesh: counts, topology and quality, plus, against a reference, the
 // Hausdorff distance (when measured: `distance`, of `mesh` against `reference`) and the topology
-// comparison.
-// JSON and text carry the same figures.
+// comparison. JSON and text carry the same figures.
 struct MeshReport {
   TopologyReport topology;
   bool same_topology_as_reference = true;
@@ -38,8 +38,10 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
                        const TriangleMesh* reference, const HausdorffReport* distance = nullptr,
                        const TopologyReport* reference_topology = nullptr);
 
-// Non-fatal facts a user should hear about (non-manifold, several components, ...), one line
-// each on stderr, prefixed by the file name.
-void warn_about_topology(const std::string& file, const TopologyReport& t);
+// The report of remesh(input) = result, named `name` (the output's): report_mesh of the output
+// against the input, then the features kept (distance to the input's curves, corners), topology
+// control, the CVT's figures and the phases' times. `cvtmesh remesh` prints it.
+MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
+                         const RemeshResult& result);
 
-}  // namespace cvtmesh::cli
+}  // namespace cvtmesh

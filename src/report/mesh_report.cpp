@@ -1,10 +1,10 @@
-#include "mesh_report.hpp"
+#include "cvtmesh/report.hpp"
 
 #include <optional>
 
 #include <fmt/core.h>
 
-namespace cvtmesh::cli {
+namespace cvtmesh {
 
 nlohmann::ordered_json mesh_json(const TopologyReport& t, const QualityReport& q) {
   nlohmann::ordered_json j;
@@ -102,15 +102,4 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
   return r;
 }
 
-void warn_about_topology(const std::string& file, const TopologyReport& t) {
-  if (t.nonmanifold_edges > 0)
-    fmt::print(stderr, "{}: warning: {} non-manifold edges (three or more triangles)\n", file,
-               t.nonmanifold_edges);
-  if (t.nonmanifold_vertices > 0)
-    fmt::print(stderr, "{}: warning: {} non-manifold vertices\n", file, t.nonmanifold_vertices);
-  if (t.components > 1)
-    fmt::print(stderr, "{}: note: {} connected components\n", file, t.components);
-  if (!t.orientable) fmt::print(stderr, "{}: note: the surface is not orientable\n", file);
-}
-
-}  // namespace cvtmesh::cli
+}  // namespace cvtmesh

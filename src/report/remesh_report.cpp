@@ -1,0 +1,90 @@
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "cvtmesh/report.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// A percentage of the diagonal, or null where the distance is infinite (input features but no
+// output feature edge: JSON has no infinity).
+nlohmann::ordered_json percent_or_null(double distance, double diagonal) {
+  return std::isfinite(distance) ? nlohmann::ordered_json(100 * distance / diagonal) : nullptr;
+}
+
+}  // namespace
+
+MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
+                         const RemeshResult& r) {
+  MeshReport report =
+      report_mesh(name, r.mesh, &input, r.hausdorff ? &*r.hausdorff : nullptr, &r.input_topology);
+  const double diagonal = bounding_box(input).diagonal();
+  const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
+  const std::size_t corners_out = corners_kept(input, r.features, r.mesh);
+  // The input's narrowest angle between two feature curves: what θmin can be at best there.
+  const double sector = narrowest_feature_sector_deg(input, r.features);
+  const double total =
+      r.seconds_initialization + r.seconds_rcvt + r.seconds_ccvt + r.seconds_extraction;
+
+  auto& j = report.json;
+  j["feature_edges_in"] = r.features.edges.size();
+  j["feature_curves_in"] = r.features.curves.size();
+  j["corners_in"] = r.features.corners.size();
+  j["corners_out"] = corners_out;
+  j["feature_edges_out"] = r.feature_edges.size();
+  j["feature_edges_missing"] = r.feature_edges_missing;
+  j["feature_sector_min_deg"] = sector;
+  j["links_mended"] = r.links_mended;
+  j["islands_seeded"] = r.islands_seeded;
+  j["seeds_refined"] = r.seeds_refined;
+  j["triangles_removed"] = r.triangles_removed;
+  j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
+  j["links_flipped"] = r.links_flipped;
+  j["tips_closed"] = r.tips_closed;
+  j["mend_rounds"] = r.mend_rounds;
+  j["time_limit_reached"] = r.time_limit_reached;
+  j["feature_hausdorff_max_pct"] = percent_or_null(fd.max, diagonal);
+  j["feature_hausdorff_mean_pct"] = percent_or_null(fd.mean, diagonal);
+  j["iterations"] = r.iterations;
+  j["rvd_evaluations"] = r.rvd_evaluations;
+  j["energy_initial"] = r.energy_initial;
+  j["energy_final"] = r.energy_final;
+  j["gradient_norm_final"] = r.gradient_norm_final;
+  j["defects_polished"] = r.defects_polished;
+  j["polish_rounds"] = r.polish_rounds;
+  j["time_s"] = total;
+  j["timings"] = {{"initialization", r.seconds_initialization},
+                  {"rcvt", r.seconds_rcvt},
+                  {"ccvt", r.seconds_ccvt},
+                  {"extraction", r.seconds_extraction}};
+
+  std::string& text = report.text;
+  if (!r.features.empty()) {
+    const std::string distance =
+        std::isfinite(fd.max) ? fmt::format("distance max {:.4f}% mean {:.4f}% of bbox diagonal",
+                                            100 * fd.max / diagonal, 100 * fd.mean / diagonal)
+                              : "no distance (no output feature edge)";
+    text += fmt::format(
+        "  features  {} edges in {} curves, {}/{} corners kept, {} output feature edges ({} "
+        "missing, {} mended), {}; narrowest angle between input features {:.2f}° (θmin of a "
+        "faithful output is at most about that)\n",
+        r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
+        r.feature_edges.size(), r.feature_edges_missing, r.links_mended, distance, sector);
+  }
+  text += fmt::format(
+      "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
+      "triangles polished in {} rounds\n",
+      r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
+      r.polish_rounds);
+  if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
+    text += fmt::format(
+        "  topology  {} rounds of control: {} seeds added in split cells, {} at defects, {} on "
+        "cut curves; {} feature edges flipped in, {} triangles added at boundary tips\n",
+        r.mend_rounds, r.islands_seeded, r.seeds_refined, r.links_mended, r.links_flipped,
+        r.tips_closed);
+  return report;
+}
+
+}  // namespace cvtmesh
