@@ -5,7 +5,9 @@
 #include <cstring>
 
 #include "cvtmesh/errors.hpp"
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
@@ -146,6 +148,24 @@ TEST(ReadMesh, ErrorNamesTheFileAndTheProblem) {
     EXPECT_NE(what.find((dir / "bad.off").string()), std::string::npos) << what;
     EXPECT_NE(what.find("out of range"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+// A file that cannot be opened is a FileError (an OSError in Python); what it holds, an
+// InputError of another kind.
+TEST(ReadMesh, AFileThatCannotBeOpenedIsAFileError) {
+  TempDir dir;
+  EXPECT_THROW(read_mesh(dir / "missing.off"), FileError);
+  EXPECT_THROW(read_mesh(dir.path()), FileError);
+  EXPECT_THROW(read_points(dir / "missing.txt"), FileError);
+  EXPECT_THROW(read_feature_edges(dir / "missing.txt"), FileError);
+  write_file(dir / "bad.off", "OFF\n3 1 0\n0 0 0\n");
+  try {
+    read_mesh(dir / "bad.off");
+    FAIL() << "no exception";
+  } catch (const FileError&) {
+    FAIL() << "malformed content is no FileError";
+  } catch (const InputError&) {
   }
 }
 

@@ -16,6 +16,12 @@ struct InputError : Error {
   using Error::Error;
 };
 
+// An input file is missing, is a directory, or cannot be opened (the Python module raises
+// OSError for it, ValueError for other input errors).
+struct FileError : InputError {
+  using InputError::InputError;
+};
+
 // An output could not be written.
 struct OutputError : Error {
   using Error::Error;

@@ -38,6 +38,12 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
                        const TriangleMesh* reference, const HausdorffReport* distance = nullptr,
                        const TopologyReport* reference_topology = nullptr);
 
+// Hausdorff samples per surface of a remesh's report (RemeshSettings::hausdorff), besides every
+// vertex of both meshes: the mean's sampling error is about 1% (0.0990% against 0.0986% with
+// 200k samples on eight.off at 1k vertices), and the report costs under a tenth of the remesh
+// instead of as much as it. `quality --ref` measures densely.
+inline constexpr std::size_t kRemeshReportSamples = 20'000;
+
 // The report of remesh(input) = result, named `name` (the output's): report_mesh of the output
 // against the input, then the features kept (distance to the input's curves, corners), topology
 // control, the CVT's figures and the phases' times. `cvtmesh remesh` prints it.

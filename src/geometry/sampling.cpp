@@ -8,6 +8,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
 #include "geometry/area_sampler.hpp"
+#include "io/input_problem.hpp"
 
 namespace cvtmesh {
 
@@ -32,7 +33,7 @@ std::vector<Vec3> read_points(const std::filesystem::path& path) {
     return std::move(mesh.vertices);
   }
   std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open for reading");
+  if (!in) unreadable_file(path, "cannot open for reading");
   std::vector<Vec3> points;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {

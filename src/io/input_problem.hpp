@@ -1,5 +1,5 @@
 // The one-line messages of the readers: "FILE: problem", or "FILE:LINE: problem" where a line
-// can be named, thrown as InputError.
+// can be named, thrown as InputError (FileError for a file that cannot be opened).
 #pragma once
 
 #include <cstddef>
@@ -18,6 +18,12 @@ namespace cvtmesh {
 [[noreturn]] inline void input_problem(const std::filesystem::path& path, std::size_t line,
                                        const std::string& problem) {
   throw InputError(path.string() + ":" + std::to_string(line) + ": " + problem);
+}
+
+// A file that is missing or cannot be opened, thrown as FileError.
+[[noreturn]] inline void unreadable_file(const std::filesystem::path& path,
+                                         const std::string& problem) {
+  throw FileError(path.string() + ": " + problem);
 }
 
 }  // namespace cvtmesh

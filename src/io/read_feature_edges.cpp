@@ -10,7 +10,7 @@ namespace cvtmesh {
 
 std::vector<Edge> read_feature_edges(const std::filesystem::path& path) {
   std::ifstream in(path);
-  if (!in) input_problem(path, "cannot open the feature-edge file");
+  if (!in) unreadable_file(path, "cannot open the feature-edge file");
   std::vector<Edge> edges;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {

@@ -205,14 +205,14 @@ TriangleMesh triangulate(const std::filesystem::path& path, Soup& soup, ReadRepo
 TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) input_problem(path, "no such file");
-  if (std::filesystem::is_directory(status)) input_problem(path, "is a directory, not a mesh file");
+  if (!std::filesystem::exists(status)) unreadable_file(path, "no such file");
+  if (std::filesystem::is_directory(status)) unreadable_file(path, "is a directory, not a mesh file");
   const auto format = format_from_extension(path);
   if (!format)
     input_problem(path, "unknown extension '" + path.extension().string() +
                             "' (expected .obj, .off, .ply or .stl)");
   std::ifstream in(path, std::ios::binary);
-  if (!in) input_problem(path, std::string("cannot open for reading: ") + std::strerror(errno));
+  if (!in) unreadable_file(path, std::string("cannot open for reading: ") + std::strerror(errno));
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size == 0) input_problem(path, "file is empty");
   if (*format == MeshFormat::stl) check_binary_stl_size(path, in, size);

@@ -1,0 +1,219 @@
+// cvtmesh.remesh: the `cvtmesh remesh` command on numpy arrays, with the same options under the
+// same names, returning the same report as its --json.
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+#include <tbb/global_control.h>
+
+#include <optional>
+#include <string>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/io.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/repair.hpp"
+#include "cvtmesh/report.hpp"
+#include "cvtmesh/sampling.hpp"
+#include "python_hooks.hpp"
+
+namespace cvtmesh::python {
+
+namespace {
+
+template <class T>
+bool given(const std::optional<T>& value) {
+  return value.has_value();
+}
+
+Optimizer optimizer_named(const std::string& name) {
+  if (name == "lbfgs") return Optimizer::lbfgs;
+  if (name == "lloyd") return Optimizer::lloyd;
+  throw InvalidArgument("optimizer: '" + name + "' is not one of lbfgs, lloyd");
+}
+
+CvtMode mode_named(const std::string& name) {
+  if (name == "both") return CvtMode::both;
+  if (name == "rcvt") return CvtMode::rcvt;
+  if (name == "ccvt") return CvtMode::ccvt;
+  throw InvalidArgument("mode: '" + name + "' is not one of rcvt, ccvt, both");
+}
+
+// Feature edges as a file name (read as `--feature-edges` reads it) or a (k, 2) array.
+std::vector<Edge> feature_edges_from(const py::object& edges, std::size_t vertex_count) {
+  if (py::isinstance<py::str>(edges) || py::hasattr(edges, "__fspath__"))
+    return read_feature_edges(py::str(edges).cast<std::string>());
+  return edges_from_array(edges, vertex_count);
+}
+
+py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::size_t> vertices,
+                 std::optional<double> edge_length, std::optional<double> edge_length_rel,
+                 const py::object& seeds, const std::optional<std::string>& seeds_file,
+                 int iterations, std::size_t samples, bool no_hausdorff, int polish_rounds,
+                 int topology_rounds, const std::string& optimizer, const std::string& mode,
+                 std::uint64_t seed, std::optional<double> feature_angle, bool no_features,
+                 const py::object& feature_edges, double time_limit, bool quiet, int threads,
+                 const std::function<void(const RemeshProgress&)>& progress) {
+  TriangleMesh input = mesh_from_arrays(V, F);
+  RemeshSettings s;
+  if (!feature_edges.is_none())
+    s.features.user_edges = feature_edges_from(feature_edges, input.vertices.size());
+  if (const RepairReport r = repair_mesh(input); r.noteworthy())
+    PyErr_WarnEx(PyExc_UserWarning, ("cvtmesh.remesh: repaired: " + r.summary()).c_str(), 1);
+
+  const int sizes = given(vertices) + given(edge_length) + given(edge_length_rel) +
+                    !seeds.is_none() + given(seeds_file);
+  if (sizes != 1)
+    throw InvalidArgument(
+        "give exactly one of vertices, edge_length, edge_length_rel, seeds, seeds_file");
+  if (vertices) s.vertices = *vertices;
+  if (edge_length) s.edge_length = *edge_length;
+  if (edge_length_rel) s.edge_length_rel = *edge_length_rel;
+  if (!seeds.is_none()) s.initial_seeds = points_from_array(seeds, "seeds");
+  if (seeds_file) s.initial_seeds = read_points(*seeds_file);
+  if (!s.initial_seeds.empty()) s.vertices = s.initial_seeds.size();  // the output size
+
+  if (feature_angle && no_features)
+    throw InvalidArgument("feature_angle and no_features exclude each other");
+  s.features.sharp_edges = !no_features;
+  s.features.angle_deg = feature_angle.value_or(s.features.angle_deg);
+  s.features.creases_at_scale = !feature_angle;  // an explicit angle forces its creases
+  s.iterations = iterations;
+  s.polish_rounds = polish_rounds;
+  s.topology_rounds = topology_rounds;
+  s.optimizer = optimizer_named(optimizer);
+  s.mode = mode_named(mode);
+  s.seed = seed;
+  s.time_limit = time_limit;
+  if (!no_hausdorff) s.hausdorff = HausdorffSettings{.samples = samples};
+  if (threads < 0) throw InvalidArgument("threads must not be negative (0: all cores)");
+
+  PythonHooks hooks;
+  s.cancel = [&hooks] { return hooks.cancel_requested(); };
+  if (progress || !quiet)
+    s.progress = [&](const RemeshProgress& p) {
+      hooks.with_gil([&] {
+        if (!quiet)
+          py::module_::import("sys").attr("stderr").attr("write")(
+              py::str("  {} {:4d}  energy {:.9e}  |grad| {:.3e}  {:7.2f}s\n")
+                  .format(p.phase, p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds));
+        if (progress) progress(p);
+      });
+    };
+
+  std::optional<RemeshResult> result;
+  std::optional<MeshReport> report;
+  try {
+    py::gil_scoped_release released;
+    std::optional<tbb::global_control> limit;
+    if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+    result = cvtmesh::remesh(input, s);
+    report = remesh_report("output", input, *result);
+  } catch (const Cancelled&) {
+    hooks.raise_if_stopped();  // the Python exception that stopped the work, if one did
+    throw;
+  }
+  return py::make_tuple(to_numpy(std::move(result->mesh.vertices)),
+                        to_numpy(std::move(result->mesh.triangles)), to_python(report->json));
+}
+
+constexpr const char* kRemeshDoc = R"(Isotropic remeshing by centroidal Voronoi tessellation.
+
+Same as `cvtmesh remesh IN OUT`, on arrays: the options have the CLI's names, with
+underscores for dashes. Give exactly one size: vertices, edge_length, edge_length_rel, seeds
+or seeds_file.
+
+Parameters
+----------
+V : (n, 3) float array
+    Input vertex coordinates, in any units.
+F : (m, 3) int array
+    Input triangles, as indices into V. The input is repaired as the CLI repairs it
+    (exact duplicate vertices merged where that keeps the surface manifold, zero-area and
+    duplicate triangles dropped), with a UserWarning saying what changed.
+vertices : int
+    Number of output vertices.
+edge_length : float
+    Target edge length, in the mesh's units.
+edge_length_rel : float
+    Target edge length as a fraction of the bounding-box diagonal.
+seeds : (k, 3) float array
+    Initial seeds instead of random ones; their count is the output size.
+seeds_file : str
+    The same, read from a file ("x y z" lines, or a mesh's vertices).
+iterations : int, default 10
+    Iteration cap of each phase (RCVT, then CCVT).
+samples : int, default 20000
+    Hausdorff samples per surface for the report, besides all vertices.
+no_hausdorff : bool, default False
+    Skip the Hausdorff distance (its report keys are None).
+polish_rounds : int, default 3
+    Rounds of local Lloyd steps around badly shaped triangles (0: none).
+topology_rounds : int, default 12
+    Rounds of topology control: seeds added where the output misses feature edges or
+    differs in topology; the best round is kept (0: none).
+optimizer : {"lbfgs", "lloyd"}, default "lbfgs"
+mode : {"both", "rcvt", "ccvt"}, default "both"
+    RCVT then CCVT, or only one of them.
+seed : int, default 1
+    Random seed of the initial sampling: same seed, same output, on any thread count.
+feature_angle : float, degrees
+    Sharp edge: its faces' normals differ by more than this. Given, it forces these creases;
+    by default (60) only creases with flat sides at the output's scale are kept.
+no_features : bool, default False
+    Keep no sharp edges (boundaries and feature_edges are still kept).
+feature_edges : str or (k, 2) int array
+    Feature edges to keep, as vertex-id pairs of the input, or a file of "a b" lines.
+time_limit : float, seconds, default 0 (none)
+    Then the optimization and the rounds stop, and the mesh of the seeds as they are is
+    returned (valid; report["time_limit_reached"] says so).
+quiet : bool, default True
+    False prints the CLI's progress lines on sys.stderr.
+threads : int, default 0 (all cores)
+progress : callable(RemeshProgress), optional
+    Called once per iteration, with the phase, iteration, energy, gradient_norm and
+    elapsed_seconds. An exception it raises stops the remesh and is raised again here.
+
+Returns
+-------
+(V2, F2, report) : (k, 3) float64 array, (t, 3) int32 array, dict
+    The output mesh, and the report: the same keys as `cvtmesh remesh --json`.
+
+Raises
+------
+ValueError  for a bad input mesh or settings; OSError for a file that cannot be read;
+MemoryError when the job would need more memory than there is (checked first);
+KeyboardInterrupt on Ctrl-C (the work stops within a fraction of a second).
+
+The GIL is released while the library works.)";
+
+}  // namespace
+
+void add_remesh(py::module_& m) {
+  py::class_<RemeshProgress>(m, "RemeshProgress", "One iteration of cvtmesh.remesh.")
+      .def_property_readonly(
+          "phase", [](const RemeshProgress& p) { return std::string(p.phase); },
+          "\"rcvt\" or \"ccvt\"")
+      .def_readonly("iteration", &RemeshProgress::iteration)
+      .def_readonly("energy", &RemeshProgress::energy, "CVT energy (at unit size)")
+      .def_readonly("gradient_norm", &RemeshProgress::gradient_norm)
+      .def_readonly("elapsed_seconds", &RemeshProgress::elapsed_seconds)
+      .def("__repr__", [](const RemeshProgress& p) {
+        return "RemeshProgress(phase='" + std::string(p.phase) +
+               "', iteration=" + std::to_string(p.iteration) +
+               ", energy=" + std::to_string(p.energy) + ")";
+      });
+  const RemeshSettings defaults;  // the library's defaults are the module's
+  m.def("remesh", &remesh, kRemeshDoc, py::arg("V"), py::arg("F"), py::arg("vertices") = py::none(),
+        py::arg("edge_length") = py::none(), py::kw_only(), py::arg("edge_length_rel") = py::none(),
+        py::arg("seeds") = py::none(), py::arg("seeds_file") = py::none(),
+        py::arg("iterations") = defaults.iterations, py::arg("samples") = kRemeshReportSamples,
+        py::arg("no_hausdorff") = false, py::arg("polish_rounds") = defaults.polish_rounds,
+        py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
+        py::arg("mode") = "both", py::arg("seed") = defaults.seed,
+        py::arg("feature_angle") = py::none(), py::arg("no_features") = false,
+        py::arg("feature_edges") = py::none(), py::arg("time_limit") = defaults.time_limit,
+        py::arg("quiet") = true, py::arg("threads") = 0, py::arg("progress") = nullptr);
+}
+
+}  // namespace cvtmesh::python
