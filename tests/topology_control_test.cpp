@@ -25,6 +25,18 @@ namespace {
 
 using namespace cvtmesh::testing;
 
+// The output vertices of the seeds topology control added: distinct output ids, at most one per
+// seed added, and some whenever seeds were added in cells or at defects (seeds on curves may
+// replace others).
+void expect_added_vertices_listed(const RemeshResult& r) {
+  const std::vector<Index>& added = r.vertices_added;
+  EXPECT_TRUE(std::is_sorted(added.begin(), added.end()));
+  EXPECT_EQ(std::adjacent_find(added.begin(), added.end()), added.end());
+  for (const Index v : added) EXPECT_LT(v, r.mesh.vertices.size());
+  EXPECT_LE(added.size(), r.islands_seeded + r.seeds_refined + r.links_mended);
+  EXPECT_EQ(added.empty(), r.islands_seeded + r.seeds_refined + r.links_mended == 0);
+}
+
 // The box [-1,1]² × [-0.01,0.01]: a thin plate, closed.
 TriangleMesh thin_plate() {
   TriangleMesh m = cube(8);
@@ -334,6 +346,8 @@ TEST(TopologyControlSharedData, SelfIntersectingThinLimbsComeOutManifold) {
     EXPECT_TRUE(t.consistently_oriented);
   }
   EXPECT_LE(controlled.triangles_removed, first.triangles_removed);
+  expect_added_vertices_listed(controlled);
+  EXPECT_GT(controlled.vertices_added.size(), 0u);
   std::printf("man.off at 3k: %zu triangles removed without rounds, %zu with\n",
               first.triangles_removed, controlled.triangles_removed);
 }
@@ -361,6 +375,7 @@ void expect_valid_remesh(const TriangleMesh& input, std::size_t vertices) {
       << t.boundary_loops << " vs " << in.boundary_loops << "; " << r.triangles_removed
       << " triangles removed";
   EXPECT_EQ(r.triangles_removed, 0u);
+  expect_added_vertices_listed(r);
 }
 
 TEST(HardCases, TwoParallelSheetsCloserThanTheEdgeLength) {

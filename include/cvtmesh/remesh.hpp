@@ -94,6 +94,9 @@ struct RemeshResult {
   // edge or vertex, a boundary edge the input lacks, a fold): at the points where the defective
   // triangles' dual Voronoi edges cross the surface (Delaunay refinement).
   std::size_t seeds_refined = 0;
+  // The output vertices of the seeds that topology control added (ids into `mesh`, sorted):
+  // where the surface needed more vertices than the requested count for its topology.
+  std::vector<Index> vertices_added;
   std::size_t links_flipped = 0;  // links still missing after that, made by one edge flip
   std::size_t tips_closed = 0;    // triangles added at corners of boundary tips
   int mend_rounds = 0;

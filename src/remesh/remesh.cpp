@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <span>
 
 #include <tbb/task_group.h>
 
@@ -49,12 +50,27 @@ double edge_length_for(double area, std::size_t n) {
   return std::sqrt(area / (std::sqrt(3.0) / 2 * static_cast<double>(n)));
 }
 
-// The links that are edges of the output, in output vertex ids; the output's vertices are
-// seeds, matched by position (repairs renumber them).
-std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
-                               const std::vector<Vec3>& seeds, const TriangleMesh& output) {
+// The output's vertices are seeds, matched by position (repairs renumber them).
+std::map<Vec3, Index> vertex_ids(const TriangleMesh& output) {
   std::map<Vec3, Index> id;
   for (Index v = 0; v < output.vertices.size(); ++v) id.emplace(output.vertices[v], v);
+  return id;
+}
+
+// The ids of the output vertices at `seeds` (those with a vertex), sorted.
+std::vector<Index> vertices_at(const TriangleMesh& output, std::span<const Vec3> seeds) {
+  const std::map<Vec3, Index> id = vertex_ids(output);
+  std::vector<Index> found;
+  for (const Vec3& p : seeds)
+    if (const auto it = id.find(p); it != id.end()) found.push_back(it->second);
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// The links that are edges of the output, in output vertex ids.
+std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
+                               const std::vector<Vec3>& seeds, const TriangleMesh& output) {
+  const std::map<Vec3, Index> id = vertex_ids(output);
   const std::vector<Edge> edges = sorted_edges(output);
   std::vector<Edge> traced;
   for (const FeatureLink& link : links) {
@@ -193,6 +209,7 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
       mesh,    result.input_topology,   features, *curves, *projector, placement,
       spacing, {settings.polish_rounds}};
   MendReport mends;
+  const std::size_t optimized_seeds = seeds.size();  // the rounds append theirs
   output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
                          mends);
   result.polish_rounds += mends.polish_rounds;
@@ -208,6 +225,8 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
   if (result.input_topology.is_manifold())
     result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
+  result.vertices_added =
+      vertices_at(result.mesh, std::span(seeds).subspan(std::min(optimized_seeds, seeds.size())));
   if (!constraints.empty()) {
     const std::vector<FeatureLink> links = feature_links(seeds, constraints, features, *curves);
     result.feature_edges = traced_edges(links, seeds, result.mesh);

@@ -41,6 +41,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["seeds_refined"] = r.seeds_refined;
   j["triangles_removed"] = r.triangles_removed;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
+  j["vertices_added"] = r.vertices_added;
   j["links_flipped"] = r.links_flipped;
   j["tips_closed"] = r.tips_closed;
   j["mend_rounds"] = r.mend_rounds;
