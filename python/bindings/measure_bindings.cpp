@@ -10,6 +10,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/hausdorff.hpp"
+#include "cvtmesh/quality.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/report.hpp"
 #include "cvtmesh/rvd.hpp"
@@ -47,12 +48,27 @@ py::dict quality(const py::object& V, const py::object& F, const py::object& ref
   return to_python(report->json);
 }
 
-py::dict features(const py::object& V, const py::object& F, double angle,
+py::dict triangle_shapes(const py::object& V, const py::object& F) {
+  const TriangleMesh mesh = mesh_from_arrays(V, F);
+  std::vector<double> q(mesh.triangles.size()), smallest(q.size()), largest(q.size());
+  for (std::size_t t = 0; t < q.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const TriangleShape s = triangle_shape(a, b, c);
+    q[t] = s.quality, smallest[t] = s.min_angle, largest[t] = s.max_angle;
+  }
+  py::dict d;
+  d["q"] = to_numpy(std::move(q));
+  d["min_angle_deg"] = to_numpy(std::move(smallest));
+  d["max_angle_deg"] = to_numpy(std::move(largest));
+  return d;
+}
+
+py::dict features(const py::object& V, const py::object& F, double angle, double scale,
                   const py::object& feature_edges) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
   FeatureSettings settings;
   settings.angle_deg = angle;
-  settings.creases_at_scale = false;  // every sharp edge, as an explicit --feature-angle
+  settings.scale = scale;  // 0: every curve of sharp edges, as an explicit --feature-angle
   if (!feature_edges.is_none())
     settings.user_edges = edges_from_array(feature_edges, mesh.vertices.size());
   Features found;
@@ -144,13 +160,22 @@ threads : int, default 0 (all cores)
 
 Returns a dict with the keys of `cvtmesh quality --json`: q_min, angle_min_deg (degrees),
 pct_angle_below_30, hausdorff_max_pct, same_topology, ...)");
+  m.def("triangle_shapes", &triangle_shapes, py::arg("V"), py::arg("F"),
+        R"(The shape of every triangle, as `quality` measures it.
+
+Returns a dict of (m,) float64 arrays: "q" (Q = 6/sqrt(3) A/(p h), paper section 5: 1 for
+an equilateral triangle, 0 for a degenerate one), "min_angle_deg" and "max_angle_deg".)");
   m.def("features", &features, py::arg("V"), py::arg("F"), py::arg("angle") = 60.0, py::kw_only(),
-        py::arg("feature_edges") = py::none(),
+        py::arg("scale") = 0.0, py::arg("feature_edges") = py::none(),
         R"(Sharp edges, boundaries and corners of a mesh (paper section 4.3).
 
 angle : float, degrees, default 60
     An interior edge is sharp when its two faces' normals differ by more than this.
     Boundary and non-manifold edges are features always.
+scale : float, default 0
+    An output's target edge length: curves of sharp edges only are then dropped where they
+    are no features at that scale (shorter than twice it, or jagged folds between sides that
+    are not flat within it), as remesh does by default. 0 keeps every curve.
 feature_edges : (k, 2) int array, optional
     More feature edges, as vertex-id pairs; each must be an edge of the mesh.
 

@@ -6,7 +6,7 @@
     print(report["q_min"], report["angle_min_deg"], report["same_topology"])
     cvtmesh.write("knot-3k.off", V2, F2)
 
-Functions: remesh, read, write, quality, features, rvd (see help() of each). Arrays in:
+Functions: remesh, read, write, quality, triangle_shapes, features, rvd (see help() of each). Arrays in:
 (n, 3) float vertex coordinates and (m, 3) int triangles. Arrays out: float64 and int32,
 handed over without copies. Reports are dicts with the keys of the CLI's --json.
 
@@ -22,8 +22,9 @@ from ._cvtmesh import (  # noqa: F401  (the package's API)
     read,
     remesh,
     rvd,
+    triangle_shapes,
     write,
 )
 
-__all__ = ["remesh", "read", "write", "quality", "features", "rvd", "RemeshProgress",
-           "__version__"]
+__all__ = ["remesh", "read", "write", "quality", "triangle_shapes", "features", "rvd",
+           "RemeshProgress", "__version__"]

@@ -225,6 +225,17 @@ class MeasureTest(unittest.TestCase):
             cli = cli_json("quality", a, "--ref", b, "--samples", "5000")
         self.assertEqual(cvtmesh.quality(V2, F2, (V, F), samples=5000), cli)
 
+    def test_triangle_shapes_are_the_quality_reports(self):
+        V, F = torus()
+        shapes = cvtmesh.triangle_shapes(V, F)
+        q = cvtmesh.quality(V, F)
+        self.assertEqual(shapes["q"].min(), q["q_min"])
+        self.assertEqual(shapes["min_angle_deg"].min(), q["angle_min_deg"])
+        self.assertEqual(shapes["max_angle_deg"].max(), q["angle_max_deg"])
+        equilateral = cvtmesh.triangle_shapes([[0, 0, 0], [1, 0, 0], [0.5, 3**0.5 / 2, 0]],
+                                              [[0, 1, 2]])
+        self.assertAlmostEqual(equilateral["q"][0], 1, delta=1e-12)
+
     def test_features_of_a_cube(self):
         V, F = cube()
         f = cvtmesh.features(V, F)
@@ -234,6 +245,10 @@ class MeasureTest(unittest.TestCase):
         self.assertEqual(f["closed"], [False] * 12)
         self.assertAlmostEqual(f["narrowest_sector_deg"], 90)
         self.assertEqual(len(cvtmesh.features(V, F, angle=120)["edges"]), 0)
+        # At the scale of a remesh with edges longer than half the cube's, its edges are no
+        # features any more (each curve is shorter than twice the edge length).
+        self.assertEqual(len(cvtmesh.features(V, F, scale=0.1)["edges"]), 12)
+        self.assertEqual(len(cvtmesh.features(V, F, scale=0.6)["edges"]), 0)
 
     def test_rvd_cells_tile_the_surface(self):
         V, F = torus()
