@@ -6,7 +6,8 @@
 Runs `python3 -m cvtmesh.batch DATA OUT --vertices N` twice into fresh folders, in one script:
 on the local process pool (--jobs J), then on a Dask cluster of J single-threaded worker
 processes started here on the loopback address (--scheduler). Prints both wall times (the
-cluster's start-up not counted), their ratio, and how many meshes each remeshed.
+cluster's start-up not counted), their ratio, how many meshes each remeshed, and the sum of
+the meshes' own times (work; the wall time times the jobs, less that, is idle or overhead).
 """
 
 import argparse
@@ -29,7 +30,8 @@ def run(data, out, options, env):
     with open(os.path.join(out, "cvtmesh-batch.jsonl"), encoding="utf-8") as f:
         rows = [json.loads(line) for line in f]
     ok = sum(row["status"] == "ok" for row in rows)
-    return seconds, ok, len(rows), process.returncode
+    work = sum(row["seconds"] or 0 for row in rows)
+    return seconds, ok, len(rows), process.returncode, work
 
 
 def main():
@@ -52,8 +54,9 @@ def main():
                           host="127.0.0.1", dashboard_address=None) as cluster:
             dask = run(args.data, os.path.join(tmp, "dask"),
                        size + ["--scheduler", cluster.scheduler_address], env)
-    for name, (seconds, ok, rows, code) in (("process pool", pool), ("Dask", dask)):
-        print(f"{name:12s} {seconds:7.1f} s   {ok}/{rows} meshes ok   exit {code}")
+    for name, (seconds, ok, rows, code, work) in (("process pool", pool), ("Dask", dask)):
+        print(f"{name:12s} {seconds:7.1f} s   {ok}/{rows} meshes ok   exit {code}   "
+              f"{work:7.1f} s of work (sum over meshes)")
     print(f"{os.path.basename(os.path.normpath(args.data))} at {args.vertices} vertices, "
           f"{args.jobs} jobs: Dask / pool = {dask[0] / pool[0]:.3f}")
 

@@ -2,11 +2,17 @@
 
 namespace cvtmesh::python {
 
+PythonHooks::PythonHooks() {
+  const py::module_ threading = py::module_::import("threading");
+  caller_handles_signals_ = threading.attr("current_thread")().is(threading.attr("main_thread")());
+}
+
 bool PythonHooks::cancel_requested() {
   if (stopped_) return true;
-  // Signal handlers only run on Python's main thread, with the GIL; only the thread that
-  // called in (and released the GIL) checks, so that worker threads never wait for it.
-  if (std::this_thread::get_id() != caller_) return false;
+  // Signal handlers only run on Python's main thread, with the GIL. Only that thread, when it
+  // is the one that called in (and released the GIL), checks: worker threads, and a call made
+  // from another Python thread (a Dask worker's task), never wait for the GIL here.
+  if (!caller_handles_signals_ || std::this_thread::get_id() != caller_) return false;
   const auto now = std::chrono::steady_clock::now();
   if (now - last_check_ < std::chrono::milliseconds(50)) return false;
   last_check_ = now;

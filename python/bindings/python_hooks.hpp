@@ -16,8 +16,10 @@ namespace py = pybind11;
 
 class PythonHooks {
  public:
-  // For RemeshSettings::cancel: thread-safe and cheap; on the calling thread, at most every
-  // 50 ms, takes the GIL to let Python look at pending signals.
+  PythonHooks();  // with the GIL
+  // For RemeshSettings::cancel: thread-safe and cheap; when called in from Python's main
+  // thread, on that thread and at most every 50 ms, takes the GIL to let Python look at pending
+  // signals.
   bool cancel_requested();
   // Runs `call` with the GIL; a Python exception it raises is kept and stops the work.
   template <class F>
@@ -39,6 +41,7 @@ class PythonHooks {
   std::atomic<bool> stopped_{false};
   std::optional<py::error_already_set> error_;
   const std::thread::id caller_ = std::this_thread::get_id();
+  bool caller_handles_signals_ = false;
   std::chrono::steady_clock::time_point last_check_ = std::chrono::steady_clock::now();
 };
 
