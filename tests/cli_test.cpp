@@ -465,6 +465,28 @@ TEST(CliRemesh, FeatureKeysFlagsAndEdgeFile) {
   EXPECT_NE(garbage.err.find("garbage.txt:1:"), std::string::npos) << garbage.err;
 }
 
+// Feature edges name the file's vertices, whatever the repair renumbers: here a vertex used by
+// no triangle comes first, so every id moves down by one once it is dropped.
+TEST(CliRemesh, FeatureEdgesKeepTheFilesVertexIdsThroughTheRepair) {
+  TempDir dir;
+  TriangleMesh sphere = icosphere(2);
+  TriangleMesh stored;
+  stored.vertices.push_back({5, 5, 5});  // unreferenced
+  stored.vertices.insert(stored.vertices.end(), sphere.vertices.begin(), sphere.vertices.end());
+  for (Triangle t : sphere.triangles) stored.triangles.push_back({t[0] + 1, t[1] + 1, t[2] + 1});
+  write_mesh(dir / "sphere.off", stored);
+  const Triangle& t = sphere.triangles[7];
+  std::ofstream(dir / "edges.txt") << t[0] + 1 << ' ' << t[1] + 1 << '\n'
+                                   << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  const CliRun r = run_cli(dir, "remesh --json --quiet --vertices 300 --no-features " +
+                                    quoted(dir / "sphere.off") + " " + quoted(dir / "out.off") +
+                                    " --feature-edges " + quoted(dir / "edges.txt"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["feature_edges_in"], 2);
+  EXPECT_EQ(j["corners_in"], 3);  // the chain's two ends, and its 120° turn between them
+}
+
 TEST(CliRemesh, JaggedFoldsAreNoFeaturesByDefaultButAnExplicitAngleForcesThem) {
   TempDir dir;
   TriangleMesh bumpy = icosphere(3);  // vertices alternately in and out: folds of over 60°

@@ -1,6 +1,7 @@
 // Shape-preserving repairs: each kind is counted, applied, and keeps the surface.
 #include <gtest/gtest.h>
 
+#include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
 #include "support/shapes.hpp"
@@ -77,7 +78,12 @@ TEST(Repair, MergesExactlyDuplicateVerticesAndStitchesTheSurface) {
     for (const Vec3& p : indexed.corners(t)) soup.vertices.push_back(p);
     soup.triangles.push_back({base, base + 1, base + 2});
   }
-  const RepairReport r = repair_mesh(soup);
+  const TriangleMesh given = soup;
+  std::vector<Index> new_id;
+  const RepairReport r = repair_mesh(soup, &new_id);
+  ASSERT_EQ(new_id.size(), given.vertices.size());
+  for (Index v = 0; v < given.vertices.size(); ++v)  // each corner to the vertex it became
+    EXPECT_EQ(soup.vertices[new_id[v]], given.vertices[v]);
   EXPECT_EQ(r.duplicate_vertices_merged, 3 * indexed.triangles.size() - indexed.vertices.size());
   EXPECT_EQ(soup.vertices.size(), indexed.vertices.size());
   const TopologyReport t = analyze_topology(soup);
@@ -127,7 +133,12 @@ TEST(Repair, DropsUnreferencedVerticesAndRenumbers) {
   TriangleMesh m;
   m.vertices = {{9, 9, 9}, {0, 0, 0}, {8, 8, 8}, {1, 0, 0}, {0, 1, 0}};
   m.triangles = {{1, 3, 4}};
-  const RepairReport r = repair_mesh(m);
+  std::vector<Index> new_id;
+  const RepairReport r = repair_mesh(m, &new_id);
+  EXPECT_EQ(new_id, (std::vector<Index>{kRemovedVertex, 0, kRemovedVertex, 1, 2}));
+  EXPECT_EQ(edges_after_repair({{1, 3}, {4, 3}}, new_id), (std::vector<Edge>{{0, 1}, {1, 2}}));
+  EXPECT_THROW(edges_after_repair({{0, 1}}, new_id), InvalidArgument);  // a removed vertex
+  EXPECT_THROW(edges_after_repair({{1, 5}}, new_id), InvalidArgument);  // out of range
   EXPECT_EQ(r.unreferenced_vertices_removed, 2u);
   ASSERT_EQ(m.vertices.size(), 3u);
   EXPECT_EQ(m.triangles[0], (Triangle{0, 1, 2}));

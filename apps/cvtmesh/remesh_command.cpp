@@ -38,14 +38,16 @@ int run_remesh(RemeshOptions o) {
     throw InvalidArgument(o.output +
                           ": unknown output extension (expected .obj, .off, .ply or .stl)");
   TriangleMesh input = read_mesh(o.input);
-  if (const RepairReport r = repair_mesh(input); r.noteworthy())
+  std::vector<Index> new_id;  // the file's vertex ids in the repaired mesh
+  if (const RepairReport r = repair_mesh(input, &new_id); r.noteworthy())
     fmt::print(stderr, "{}: repaired: {}\n", o.input, r.summary());
   RemeshSettings& s = o.settings;
   s.features.sharp_edges = !o.no_features;
   s.features.creases_at_scale = !o.feature_angle_given;  // an explicit angle forces its creases
   if (!o.feature_edges.empty()) {
-    s.features.user_edges = read_feature_edges(o.feature_edges);
+    const std::vector<Edge> edges = read_feature_edges(o.feature_edges);
     try {  // checked here, to name the file in the error
+      s.features.user_edges = edges_after_repair(edges, new_id);
       detect_features(input, s.features);
     } catch (const InvalidArgument& e) {
       throw InvalidArgument(o.feature_edges + ": " + e.what());

@@ -3,7 +3,9 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
@@ -27,11 +29,21 @@ struct RepairReport {
   std::string summary() const;
 };
 
+inline constexpr Index kRemovedVertex = ~Index{0};
+
 // Applies, in this order: merge exactly-duplicate vertices where that stitches the surface and
 // makes no edge or vertex non-manifold (the others are kept apart and counted), drop zero-area
 // triangles (exact collinearity test), drop duplicate triangles (first one kept), drop unreferenced
-// vertices. Deterministic; the kept elements keep their relative order.
-RepairReport repair_mesh(TriangleMesh& mesh);
+// vertices. Deterministic; the kept elements keep their relative order. `new_id`, when given,
+// receives each vertex's id in the repaired mesh: a merged duplicate's is that of the vertex it
+// was merged into; a removed vertex's is kRemovedVertex.
+RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id = nullptr);
+
+// Edges given in a mesh's vertex ids (feature edges read from a file), in the ids of the mesh
+// repair_mesh made of it (`new_id`). InvalidArgument, naming the edge, for a vertex out of
+// range or removed, or an edge whose two vertices were merged.
+std::vector<Edge> edges_after_repair(const std::vector<Edge>& edges,
+                                     const std::vector<Index>& new_id);
 
 // Drops triangles with the same three vertices as an earlier one (any order or orientation),
 // keeping the first; returns how many were dropped. One of repair_mesh()'s steps.

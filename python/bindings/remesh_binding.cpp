@@ -56,10 +56,16 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
                  const std::function<void(const RemeshProgress&)>& progress) {
   TriangleMesh input = mesh_from_arrays(V, F);
   RemeshSettings s;
-  if (!feature_edges.is_none())
-    s.features.user_edges = feature_edges_from(feature_edges, input.vertices.size());
-  if (const RepairReport r = repair_mesh(input); r.noteworthy())
+  std::vector<Edge> edges;  // in the ids of V
+  if (!feature_edges.is_none()) edges = feature_edges_from(feature_edges, input.vertices.size());
+  std::vector<Index> new_id;  // the ids of V in the repaired mesh
+  if (const RepairReport r = repair_mesh(input, &new_id); r.noteworthy())
     PyErr_WarnEx(PyExc_UserWarning, ("cvtmesh.remesh: repaired: " + r.summary()).c_str(), 1);
+  try {
+    s.features.user_edges = edges_after_repair(edges, new_id);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(std::string("feature_edges: ") + e.what());
+  }
 
   const int sizes = given(vertices) + given(edge_length) + given(edge_length_rel) +
                     !seeds.is_none() + given(seeds_file);

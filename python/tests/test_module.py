@@ -133,6 +133,17 @@ class RemeshTest(unittest.TestCase):
             cvtmesh.remesh(self.V, self.F, vertices=20000, no_hausdorff=True)
         self.assertLess(time.monotonic() - start, 5)
 
+    def test_feature_edges_are_in_the_given_vertex_ids_through_the_repair(self):
+        V = np.concatenate([[[5.0, 5.0, 5.0]], self.V])  # unreferenced: dropped by the repair
+        F = self.F + 1
+        edges = [[F[0][0], F[0][1]], [F[0][1], F[0][2]]]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            _, _, r = cvtmesh.remesh(V, F, vertices=300, no_features=True, feature_edges=edges,
+                                     no_hausdorff=True)
+        self.assertEqual(r["feature_edges_in"], 2)
+        self.assertEqual(r["corners_in"], 3)  # the two ends, and the 120° turn between them
+
     def test_repairs_are_warned_about(self):
         F = np.concatenate([self.F, self.F[:1]])  # one duplicate triangle
         with warnings.catch_warnings(record=True) as caught:

@@ -5,6 +5,7 @@
 #include <string>
 #include <tuple>
 
+#include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "geometry/manifold_defects.hpp"
 
@@ -18,9 +19,10 @@ Kernel::Point_3 point(const Vec3& v) {
   return {v.x, v.y, v.z};
 }
 
-// Keeps the vertices with keep[v], in order, and renumbers the triangles.
-void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
-  std::vector<Index> new_index(mesh.vertices.size());
+// Keeps the vertices with keep[v], in order, and renumbers the triangles. Returns each vertex's
+// new id (kRemovedVertex for those not kept).
+std::vector<Index> compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
+  std::vector<Index> new_index(mesh.vertices.size(), kRemovedVertex);
   std::size_t n = 0;
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     if (!keep[v]) continue;
@@ -30,6 +32,13 @@ void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
   mesh.vertices.resize(n);
   for (Triangle& t : mesh.triangles)
     for (Index& v : t) v = new_index[v];
+  return new_index;
+}
+
+// Vertex ids through two renumberings, `first` then `second`.
+void compose(std::vector<Index>& first, const std::vector<Index>& second) {
+  for (Index& v : first)
+    if (v != kRemovedVertex) v = second[v];
 }
 
 // Merges vertices with exactly equal coordinates where that stitches the mesh, as CGAL's
@@ -37,8 +46,9 @@ void compact_vertices(TriangleMesh& mesh, const std::vector<bool>& keep) {
 // vertex there stays apart (two parts that touch at a point or along an edge are not welded;
 // issue 18, diplodocus.off). Groups are merged all at once, then those at a defect that the merge
 // made are split again, until none is. Returns the vertices merged; `kept_apart` counts the
-// vertices of the groups left apart, less one each.
-std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart) {
+// vertices of the groups left apart, less one each; `new_id`: each vertex's id after the merge.
+std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart,
+                                     std::vector<Index>& new_id) {
   const auto& p = mesh.vertices;
   std::vector<Index> order(p.size());
   std::iota(order.begin(), order.end(), Index{0});
@@ -80,7 +90,8 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart
   if (count == 0) return 0;
   for (Triangle& t : mesh.triangles)
     for (Index& v : t) v = target(v);
-  compact_vertices(mesh, keep);
+  const std::vector<Index> compacted = compact_vertices(mesh, keep);
+  for (std::size_t v = 0; v < new_id.size(); ++v) new_id[v] = compacted[target(Index(v))];
   return count;
 }
 
@@ -94,12 +105,12 @@ std::size_t remove_degenerate_triangles(TriangleMesh& mesh) {
   return before - mesh.triangles.size();
 }
 
-std::size_t remove_unreferenced_vertices(TriangleMesh& mesh) {
+std::size_t remove_unreferenced_vertices(TriangleMesh& mesh, std::vector<Index>& new_id) {
   std::vector<bool> used(mesh.vertices.size(), false);
   for (const Triangle& t : mesh.triangles)
     for (Index v : t) used[v] = true;
   const std::size_t unused = std::count(used.begin(), used.end(), false);
-  if (unused > 0) compact_vertices(mesh, used);
+  if (unused > 0) compose(new_id, compact_vertices(mesh, used));
   return unused;
 }
 
@@ -147,13 +158,38 @@ std::string RepairReport::summary() const {
   return s;
 }
 
-RepairReport repair_mesh(TriangleMesh& mesh) {
+RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id) {
   RepairReport r;
-  r.duplicate_vertices_merged = merge_duplicate_vertices(mesh, r.duplicate_vertices_kept_apart);
+  std::vector<Index> ids(mesh.vertices.size());
+  std::iota(ids.begin(), ids.end(), Index{0});
+  r.duplicate_vertices_merged =
+      merge_duplicate_vertices(mesh, r.duplicate_vertices_kept_apart, ids);
   r.degenerate_triangles_removed = remove_degenerate_triangles(mesh);
   r.duplicate_triangles_removed = remove_duplicate_triangles(mesh);
-  r.unreferenced_vertices_removed = remove_unreferenced_vertices(mesh);
+  r.unreferenced_vertices_removed = remove_unreferenced_vertices(mesh, ids);
+  if (new_id) *new_id = std::move(ids);
   return r;
+}
+
+std::vector<Edge> edges_after_repair(const std::vector<Edge>& edges,
+                                     const std::vector<Index>& new_id) {
+  std::vector<Edge> renumbered;
+  renumbered.reserve(edges.size());
+  for (const Edge& e : edges) {
+    const auto name = [&] { return std::to_string(e[0]) + " " + std::to_string(e[1]); };
+    if (e[0] >= new_id.size() || e[1] >= new_id.size())
+      throw InvalidArgument("feature edge " + name() + ": vertex id out of range (the mesh has " +
+                            std::to_string(new_id.size()) + " vertices)");
+    const Index a = new_id[e[0]], b = new_id[e[1]];
+    if (a == kRemovedVertex || b == kRemovedVertex)
+      throw InvalidArgument("feature edge " + name() +
+                            ": not an edge of the mesh (a vertex of it is in "
+                            "no triangle of non-zero area)");
+    if (a == b)
+      throw InvalidArgument("feature edge " + name() + ": its two vertices are at the same point");
+    renumbered.push_back({std::min(a, b), std::max(a, b)});
+  }
+  return renumbered;
 }
 
 RepairReport diagnose_repairs(const TriangleMesh& mesh) {
