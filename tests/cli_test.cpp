@@ -247,6 +247,26 @@ namespace {
 
 using namespace cvtmesh::testing;
 
+TEST(CliLfs, WritesTheSizesAsAPlyVertexPropertyAndRefusesOtherFormats) {
+  TempDir dir;
+  write_mesh(dir / "sphere.off", icosphere(3, 2.0));
+  const CliRun r =
+      run_cli(dir, "lfs --json " + quoted(dir / "sphere.off") + " " + quoted(dir / "sizes.ply"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["vertices"], 642);
+  EXPECT_NEAR(j["lfs_min"].get<double>(), 2.0, 0.2);  // a sphere's: its radius
+  EXPECT_NEAR(j["lfs_max"].get<double>(), 2.0, 0.2);
+  EXPECT_EQ(read_mesh(dir / "sizes.ply").vertices.size(), 642u);
+  std::ifstream ply(dir / "sizes.ply", std::ios::binary);
+  std::string header((std::istreambuf_iterator<char>(ply)), {});
+  EXPECT_NE(header.find("property float lfs\nproperty uchar red"), std::string::npos);
+  const CliRun off =
+      run_cli(dir, "lfs " + quoted(dir / "sphere.off") + " " + quoted(dir / "sizes.off"));
+  EXPECT_EQ(off.code, 2);
+  EXPECT_NE(off.err.find("use .ply"), std::string::npos) << off.err;
+}
+
 TEST(CliRvd, JsonReportTilesTheSurface) {
   TempDir dir;
   write_mesh(dir / "torus.off", torus(1, 0.4, 48, 24));

@@ -16,6 +16,7 @@ void add_quality_command(CLI::App& app, Action& run);
 void add_repair_command(CLI::App& app, Action& run);
 void add_rvd_command(CLI::App& app, Action& run);
 void add_remesh_command(CLI::App& app, Action& run);
+void add_lfs_command(CLI::App& app, Action& run);
 
 // --threads T on a subcommand; 0 means all cores. Returns the option for chaining.
 CLI::Option* add_threads_option(CLI::App& command, int& threads);

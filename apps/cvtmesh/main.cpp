@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   add_repair_command(app, run);
   add_rvd_command(app, run);
   add_remesh_command(app, run);
+  add_lfs_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

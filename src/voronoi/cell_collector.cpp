@@ -1,9 +1,9 @@
 #include <fmt/core.h>
-#include <cstring>
 
 #include "cvtmesh/rvd_consumers.hpp"
 #include "geometry/random.hpp"
 #include "io/atomic_file.hpp"
+#include "io/binary_out.hpp"
 
 namespace cvtmesh {
 
@@ -28,16 +28,7 @@ void CellCollector::end() {
   chunks_.clear();
 }
 
-namespace {
-
-template <class T>
-void put(std::ostream& out, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));  // little-endian on every platform cvtmesh targets
-  out.write(bytes, sizeof(T));
-}
-
-}  // namespace
+using io::put;
 
 void CellCollector::write_ply(const std::filesystem::path& path, int exponent) const {
   io::write_atomically(path, true, [&](std::ostream& out) {
