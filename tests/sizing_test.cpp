@@ -92,6 +92,9 @@ TEST(LocalFeatureSize, SameSettingsSameSizesAndBadSettingsAreRefused) {
   LfsSettings s;
   s.gradation = -1;
   EXPECT_THROW(local_feature_size(sphere, s), InvalidArgument);
+  // A flat disk's medial axis is at infinity: its sizes are those of the whole.
+  const TriangleMesh plane = disk(4, 12);
+  for (const double l : local_feature_size(plane)) EXPECT_EQ(l, bounding_box(plane).diagonal());
   TriangleMesh flat;
   flat.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
   flat.triangles = {{0, 1, 2}};

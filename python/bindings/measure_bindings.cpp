@@ -15,6 +15,7 @@
 #include "cvtmesh/report.hpp"
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
+#include "cvtmesh/sizing.hpp"
 
 namespace cvtmesh::python {
 
@@ -90,6 +91,18 @@ py::dict features(const py::object& V, const py::object& F, double angle, double
   d["closed"] = closed;
   d["narrowest_sector_deg"] = narrowest;
   return d;
+}
+
+py::array_t<double> lfs(const py::object& V, const py::object& F, double gradation,
+                        std::size_t samples, std::uint64_t seed, int threads) {
+  const TriangleMesh mesh = mesh_from_arrays(V, F);
+  std::vector<double> sizes;
+  {
+    py::gil_scoped_release released;
+    const auto limit = thread_limit(threads);
+    sizes = local_feature_size(mesh, {.samples = samples, .seed = seed, .gradation = gradation});
+  }
+  return to_numpy(std::move(sizes));
 }
 
 py::dict rvd(const py::object& V, const py::object& F, const py::object& seed_array, bool rdt,
@@ -183,6 +196,22 @@ Returns a dict: "edges" (k, 2) int32 (smaller id first, sorted), "corners" int32
 "curves" (a list of int32 arrays of vertex ids, corner to corner), "closed" (per curve: a loop
 without corners) and "narrowest_sector_deg" (the narrowest angle between two feature edges at
 a vertex, which bounds any faithful output's smallest angle; 360 when none).)");
+  const LfsSettings lfs_defaults;
+  m.def("lfs", &lfs, py::arg("V"), py::arg("F"), py::kw_only(),
+        py::arg("gradation") = lfs_defaults.gradation, py::arg("samples") = lfs_defaults.samples,
+        py::arg("seed") = lfs_defaults.seed, py::arg("threads") = 0,
+        R"(Local feature size at each vertex (paper section 4.1): `cvtmesh lfs`.
+
+The distance to the nearest pole (Amenta-Bern) of the vertices' 3D Delaunay triangulation,
+in the mesh's units (0 for a vertex used by no triangle), as an (n,) float64 array.
+
+gradation : float, default 1.5
+    The sizes change by at most 1/gradation per unit length along edges; 0: raw estimate.
+samples : int, default 0
+    Area samples added to the vertices, for a coarse mesh whose vertices are too sparse for
+    its thin parts (they make every edge of the polyhedron a feature).
+seed : int, default 1
+    Of those samples.)");
   m.def("rvd", &rvd, py::arg("V"), py::arg("F"), py::arg("seeds"), py::kw_only(),
         py::arg("rdt") = false, py::arg("threads") = 0,
         R"(The exact restricted Voronoi diagram of seeds on a surface: `cvtmesh rvd`.

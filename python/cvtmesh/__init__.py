@@ -6,7 +6,7 @@
     print(report["q_min"], report["angle_min_deg"], report["same_topology"])
     cvtmesh.write("knot-3k.off", V2, F2)
 
-Functions: remesh, read, write, quality, triangle_shapes, features, rvd (see help() of each). Arrays in:
+Functions: remesh, read, write, quality, triangle_shapes, features, lfs, rvd (see help() of each). Arrays in:
 (n, 3) float vertex coordinates and (m, 3) int triangles. Arrays out: float64 and int32,
 handed over without copies. Reports are dicts with the keys of the CLI's --json.
 
@@ -18,6 +18,7 @@ from ._cvtmesh import (  # noqa: F401  (the package's API)
     RemeshProgress,
     __version__,
     features,
+    lfs,
     quality,
     read,
     remesh,
@@ -26,5 +27,5 @@ from ._cvtmesh import (  # noqa: F401  (the package's API)
     write,
 )
 
-__all__ = ["remesh", "read", "write", "quality", "triangle_shapes", "features", "rvd",
+__all__ = ["remesh", "read", "write", "quality", "triangle_shapes", "features", "lfs", "rvd",
            "RemeshProgress", "__version__"]

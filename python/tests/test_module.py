@@ -261,6 +261,18 @@ class MeasureTest(unittest.TestCase):
         self.assertEqual(len(cvtmesh.features(V, F, scale=0.1)["edges"]), 12)
         self.assertEqual(len(cvtmesh.features(V, F, scale=0.6)["edges"]), 0)
 
+    def test_lfs_of_a_torus_is_its_tube_radius_and_the_clis(self):
+        V, F = torus(R=1.0, r=0.3, nu=96, nv=32)
+        sizes = cvtmesh.lfs(V, F, gradation=0)
+        self.assertEqual(sizes.shape, (len(V),))
+        np.testing.assert_allclose(sizes, 0.3, rtol=0.1)
+        with tempfile.TemporaryDirectory() as tmp:
+            cvtmesh.write(os.path.join(tmp, "t.off"), V, F)
+            cli = cli_json("lfs", os.path.join(tmp, "t.off"), os.path.join(tmp, "t.ply"))
+        graded = cvtmesh.lfs(V, F)
+        self.assertEqual(cli["lfs_min"], graded.min())
+        self.assertEqual(cli["lfs_max"], graded.max())
+
     def test_rvd_cells_tile_the_surface(self):
         V, F = torus()
         rng = np.random.default_rng(1)
