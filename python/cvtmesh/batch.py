@@ -6,7 +6,8 @@ Locally the meshes are spread over a process pool (--jobs, with a progress bar);
 output file, "ok" or "error" and the message, the seconds it took, and the remesh's report (the
 keys of `cvtmesh remesh --json`). A failing mesh is recorded and the batch goes on. Rows are
 appended as meshes finish and outputs are written atomically, so an interrupted batch loses
-nothing: run it again and it skips the meshes already done (and retries the failed ones);
+nothing: run it again and it skips the meshes already done with the same settings (and retries
+the failed ones);
 at the end the file holds one row per mesh.
 """
 
@@ -35,7 +36,8 @@ def remesh_file(source, target, settings, threads):
     import cvtmesh  # in the worker: each process imports the module once
 
     start = time.monotonic()
-    row = {"mesh": os.path.basename(source), "output": os.path.basename(target)}
+    row = {"mesh": os.path.basename(source), "output": os.path.basename(target),
+           "settings": settings}
     with warnings.catch_warnings(record=True) as caught:  # repairs: into the row
         warnings.simplefilter("always")
         try:
@@ -67,10 +69,12 @@ class Rows:
                         pass  # a line cut short by a crash: that mesh runs again
         self.file = open(self.path, "a", encoding="utf-8")
 
-    def done(self, name, folder):
+    def done(self, name, output, settings):
+        """Remeshed before, into `output`, with the same settings, and still there."""
         row = self.latest.get(name)
-        return row is not None and row["status"] == "ok" and os.path.exists(
-            os.path.join(folder, row["output"]))
+        return (row is not None and row["status"] == "ok" and row["output"] == output
+                and row.get("settings") == settings
+                and os.path.exists(os.path.join(os.path.dirname(self.path), output)))
 
     def add(self, row):
         self.latest[row["mesh"]] = row
@@ -102,6 +106,7 @@ def run_local(tasks, jobs, on_row):
                 except concurrent.futures.process.BrokenProcessPool:
                     source, target = futures[future][:2]
                     on_row({"mesh": os.path.basename(source), "output": os.path.basename(target),
+                            "settings": futures[future][2],
                             "status": "error", "report": None, "seconds": None,
                             "error": "a worker process died (crash or out of memory) while "
                                      "remeshing this mesh or one beside it"})
@@ -128,6 +133,7 @@ def run_dask(tasks, address, on_row):
                 except Exception as e:  # the worker died, or the task could not run there
                     source, target = futures[future][:2]
                     on_row({"mesh": os.path.basename(source), "output": os.path.basename(target),
+                            "settings": futures[future][2],
                             "status": "error", "report": None, "seconds": None,
                             "error": f"{type(e).__name__}: {e}"})
         except KeyboardInterrupt:
@@ -202,7 +208,7 @@ def main(argv=None):
     threads = args.threads or (1 if args.scheduler else max(1, (os.cpu_count() or 1) // jobs))
 
     rows = Rows(args.output)
-    todo = [n for n in names if not rows.done(n, args.output)]
+    todo = [n for n in names if not rows.done(n, targets[n], settings)]
     if len(todo) < len(names) and not args.quiet:
         print(f"cvtmesh.batch: {len(names) - len(todo)} of {len(names)} meshes done before, "
               "skipped", file=sys.stderr)

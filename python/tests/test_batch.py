@@ -81,6 +81,12 @@ class GeneratedFolderTest(unittest.TestCase):
         for row in rows(self.target):
             if row["status"] == "ok":  # not redone
                 self.assertEqual(row, first[row["mesh"]])
+        # Other settings: every mesh is done again.
+        other = batch(self.source, self.target, "--vertices", "200", "--jobs", "2")
+        self.assertNotIn("done before", other.stderr)
+        self.assertEqual({row["mesh"]: row["report"]["vertices"] for row in rows(self.target)
+                          if row["status"] == "ok"},
+                         {"cube.obj": 200, "fat-torus.ply": 200, "torus.off": 200})
 
     def test_dask_cluster(self):
         with local_dask_cluster() as cluster:
