@@ -100,6 +100,18 @@ class Mesh:
         return self.normals @ camera.toward_viewer >= 0
 
 
+def lost_corners(V, corners, V2):
+    """The input corners with no output vertex at their position: within a millionth of the
+    input's diagonal, so that an output stored in float32 (STL) still shows them kept."""
+    tolerance = 1e-6 * np.linalg.norm(V.max(axis=0) - V.min(axis=0))
+    lost = []
+    for start in range(0, len(corners), 64):  # bounded memory: 64 corners x all vertices
+        chunk = np.asarray(corners[start:start + 64])
+        gaps = np.linalg.norm(V[chunk][:, None, :] - V2[None, :, :], axis=2).min(axis=1)
+        lost += [int(c) for c, gap in zip(chunk, gaps) if gap > tolerance]
+    return lost
+
+
 def png(figure):
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png")
@@ -226,8 +238,7 @@ def build_page(input_path, output_path, V, F, V2, F2, remesh=None, feature_angle
 
     # The input's features as remesh finds them by default: at the output's scale.
     found = cvtmesh.features(V, F, feature_angle, scale=output_quality["edge_length_mean"])
-    at_output = {tuple(p) for p in V2}
-    lost = [int(c) for c in found["corners"] if tuple(V[c]) not in at_output]
+    lost = lost_corners(V, found["corners"], V2)
     feature_lines = Line3DCollection(V[found["edges"]], colors="#1f5fbf", linewidths=1.2)
     added = np.asarray(remesh.get("vertices_added", []) if remesh else [], dtype=int)
     worst = np.argsort(result.shapes["q"])[:WORST_MARKED]

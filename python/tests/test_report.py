@@ -82,6 +82,16 @@ class ReportTest(unittest.TestCase):
         self.assertRegex(run.stderr, r"^cvtmesh.report: error: .*missing.off.*\n$")
         self.assertFalse(os.path.exists(os.path.join(self.tmp, "x.html")))
 
+    def test_corners_kept_through_float32_and_lost_when_moved(self):
+        from cvtmesh.report import lost_corners
+
+        V = self.V
+        stored = V.astype(np.float32).astype(np.float64)  # as an STL output keeps them
+        self.assertEqual(lost_corners(V, [0, 5, 9], stored), [])
+        moved = stored.copy()
+        moved[5] += 1e-3
+        self.assertEqual(lost_corners(V, [0, 5, 9], moved), [5])
+
     @unittest.skipUnless(CHROMIUM, "chromium is not installed (scripts/deps installs it)")
     def test_a_browser_loads_it_and_decodes_every_image(self):
         url = "file://" + self.paths["report.html"]
