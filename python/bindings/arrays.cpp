@@ -34,13 +34,14 @@ py::array_t<T, py::array::c_style> table(const py::handle& object, py::ssize_t c
     throw InputError(std::string(name) + ": expected " +
                      (std::is_integral_v<T> ? "integers" : "numbers") + ", got dtype " +
                      std::string(py::str(any.dtype())));
-  if (any.ndim() != 2 || any.shape(1) != columns)
-    if (!(any.size() == 0))  // an empty list is a (0, k) table
-      throw InputError(std::string(name) + ": expected shape (n, " + std::to_string(columns) +
-                       "), got " + shape_text(any));
-  if (any.size() == 0)
+  if (any.size() == 0)  // an empty list is a (0, k) table
     return py::array_t<T, py::array::c_style>(std::vector<py::ssize_t>{0, columns});
-  return py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(any);
+  if (any.ndim() != 2 || any.shape(1) != columns)
+    throw InputError(std::string(name) + ": expected shape (n, " + std::to_string(columns) +
+                     "), got " + shape_text(any));
+  auto converted = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(any);
+  if (!converted) throw py::error_already_set();  // numpy's own reason (an overflow, say)
+  return converted;
 }
 
 // An array of T over `values`' buffer, which it keeps alive: (size) or (size, columns).

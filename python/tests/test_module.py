@@ -163,6 +163,7 @@ class BadInputTest(unittest.TestCase):
             "F: expected integers": (V, F.astype(float)),
             "F: no triangles": (V, np.zeros((0, 3), int)),
             "V: expected numbers": (np.full((8, 3), "a"), F),
+            "F: row 0 has vertex index -?[0-9]+, out of range": (V, F.astype(np.uint64) + 2**63),
         }
         for message, (bad_v, bad_f) in cases.items():
             with self.subTest(message):
