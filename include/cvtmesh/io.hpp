@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cvtmesh/mesh.hpp"
 
@@ -29,6 +30,12 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report = n
 // chosen by extension. The file appears atomically: written beside the target under a temporary
 // name, then renamed. Throws OutputError on failure, InvalidArgument for an unknown extension.
 void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh);
+
+// Writes `mesh` as binary PLY with one float vertex property `name` = values[v], and a vertex
+// colour from red (the smallest value) through yellow to blue (the largest), on a log scale:
+// a field over a surface to look at (cvtmesh lfs). Written atomically; OutputError on failure.
+void write_ply_with_vertex_scalar(const std::filesystem::path& path, const TriangleMesh& mesh,
+                                  const std::vector<double>& values, const char* name);
 
 // Throws InvalidArgument if `output` names the same file as `input` (cvtmesh never writes over
 // its input).

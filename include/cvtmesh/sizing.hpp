@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-#include <filesystem>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
@@ -30,11 +29,5 @@ struct LfsSettings {
 // the distance to the nearest pole of the samples), in the mesh's units; 0 for a vertex used by
 // no triangle. Throws InvalidArgument for a mesh without area or a negative gradation.
 std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettings& settings = {});
-
-// Writes `mesh` as binary PLY with one float vertex property `name` = values[v], and a vertex
-// colour from red (the smallest value) through yellow to blue (the largest), on a log scale.
-// Written atomically; OutputError on failure.
-void write_ply_with_vertex_scalar(const std::filesystem::path& path, const TriangleMesh& mesh,
-                                  const std::vector<double>& values, const char* name);
 
 }  // namespace cvtmesh

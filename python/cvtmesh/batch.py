@@ -52,6 +52,14 @@ def remesh_file(source, target, settings, threads):
     return row
 
 
+def failure_row(task, message):
+    """The row of a mesh whose task never returned one (its worker died, say)."""
+    source, target, settings = task[:3]
+    return {"mesh": os.path.basename(source), "output": os.path.basename(target),
+            "settings": settings, "status": "error", "error": message, "report": None,
+            "seconds": None}
+
+
 class Rows:
     """The rows file: read at the start, appended to (and flushed) as meshes finish, rewritten
     atomically with one row per mesh at the end."""
@@ -104,12 +112,9 @@ def run_local(tasks, jobs, on_row):
                 try:
                     on_row(future.result())
                 except concurrent.futures.process.BrokenProcessPool:
-                    source, target = futures[future][:2]
-                    on_row({"mesh": os.path.basename(source), "output": os.path.basename(target),
-                            "settings": futures[future][2],
-                            "status": "error", "report": None, "seconds": None,
-                            "error": "a worker process died (crash or out of memory) while "
-                                     "remeshing this mesh or one beside it"})
+                    on_row(failure_row(futures[future],
+                                       "a worker process died (crash or out of memory) while "
+                                       "remeshing this mesh or one beside it"))
         except KeyboardInterrupt:
             for future in futures:
                 future.cancel()
@@ -131,11 +136,7 @@ def run_dask(tasks, address, on_row):
                 try:
                     on_row(future.result())
                 except Exception as e:  # the worker died, or the task could not run there
-                    source, target = futures[future][:2]
-                    on_row({"mesh": os.path.basename(source), "output": os.path.basename(target),
-                            "settings": futures[future][2],
-                            "status": "error", "report": None, "seconds": None,
-                            "error": f"{type(e).__name__}: {e}"})
+                    on_row(failure_row(futures[future], f"{type(e).__name__}: {e}"))
         except KeyboardInterrupt:
             client.cancel(list(futures))
             raise

@@ -27,9 +27,6 @@ namespace {
 
 using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 using Polygon = std::vector<std::size_t>;
-// Every reader's result, OFF and PLY as read_off and read_ply give it, OBJ and STL converted
-// from CGAL's points.
-using Soup = PolygonSoup;
 
 // A binary STL is an 80-byte header, a uint32 triangle count, then 50 bytes per triangle. CGAL
 // does not say why a short file fails, so check the size here.
@@ -52,7 +49,7 @@ void check_binary_stl_size(const std::filesystem::path& path, std::istream& in,
                             std::to_string(size) + " bytes");
 }
 
-bool read_with_cgal(MeshFormat format, std::istream& in, Soup& soup, bool verbose) {
+bool read_with_cgal(MeshFormat format, std::istream& in, PolygonSoup& soup, bool verbose) {
   const auto np = CGAL::parameters::verbose(verbose);
   std::vector<Point> points;
   bool ok = false;
@@ -89,7 +86,7 @@ std::string format_name(MeshFormat format) {
   return "?";
 }
 
-std::string non_finite_vertex(const Soup& soup) {
+std::string non_finite_vertex(const PolygonSoup& soup) {
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
     const auto& [x, y, z] = soup.points[i];
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
@@ -101,7 +98,7 @@ std::string non_finite_vertex(const Soup& soup) {
   return "";
 }
 
-std::string out_of_range_index(const Soup& soup) {
+std::string out_of_range_index(const PolygonSoup& soup) {
   for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
     for (std::size_t v : soup.polygons[f]) {
       if (v >= soup.points.size()) {
@@ -115,7 +112,7 @@ std::string out_of_range_index(const Soup& soup) {
   return "";
 }
 
-std::string short_face(const Soup& soup) {
+std::string short_face(const PolygonSoup& soup) {
   for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
     if (soup.polygons[f].size() < 3)
       return "face " + std::to_string(f) + " has " + std::to_string(soup.polygons[f].size()) +
@@ -124,7 +121,7 @@ std::string short_face(const Soup& soup) {
   return "";
 }
 
-std::string emptiness(const Soup& soup) {
+std::string emptiness(const PolygonSoup& soup) {
   if (soup.points.empty() && soup.polygons.empty()) return "empty mesh: no vertices or faces";
   if (soup.points.empty()) return "empty mesh: no vertices";
   if (soup.polygons.empty()) return "empty mesh: no faces";
@@ -142,7 +139,7 @@ std::string cgal_diagnosis(MeshFormat format, const std::filesystem::path& path)
   std::streambuf* const out = std::cout.rdbuf(captured.rdbuf());
   try {
     std::ifstream in(path, std::ios::binary);
-    Soup ignored;
+    PolygonSoup ignored;
     read_with_cgal(format, in, ignored, true);
   } catch (const std::exception&) {
   }
@@ -182,7 +179,7 @@ std::string find_non_finite_token(const std::filesystem::path& path) {
   return "";
 }
 
-TriangleMesh triangulate(const std::filesystem::path& path, Soup& soup, ReadReport& report) {
+TriangleMesh triangulate(const std::filesystem::path& path, PolygonSoup& soup, ReadReport& report) {
   if (soup.points.size() > std::numeric_limits<Index>::max())
     input_problem(path, "too many vertices (" + std::to_string(soup.points.size()) + ")");
   TriangleMesh mesh;
@@ -206,7 +203,8 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (!std::filesystem::exists(status)) unreadable_file(path, "no such file");
-  if (std::filesystem::is_directory(status)) unreadable_file(path, "is a directory, not a mesh file");
+  if (std::filesystem::is_directory(status))
+    unreadable_file(path, "is a directory, not a mesh file");
   const auto format = format_from_extension(path);
   if (!format)
     input_problem(path, "unknown extension '" + path.extension().string() +
@@ -217,7 +215,7 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
   if (ec || size == 0) input_problem(path, "file is empty");
   if (*format == MeshFormat::stl) check_binary_stl_size(path, in, size);
 
-  Soup soup;
+  PolygonSoup soup;
   bool parsed = false;
   if (*format == MeshFormat::off || *format == MeshFormat::ply) {
     soup = *format == MeshFormat::off ? read_off(path, in, size) : read_ply(path, in, size);

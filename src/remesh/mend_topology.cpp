@@ -71,78 +71,73 @@ std::vector<Edge> edge_uses(const TriangleMesh& mesh) {
   return uses;
 }
 
-// The edges of exactly one triangle, each with the smaller vertex id first, sorted.
-std::vector<Edge> boundary_edges(const TriangleMesh& mesh) {
-  const std::vector<Edge> uses = edge_uses(mesh);
-  std::vector<Edge> once;
-  for (std::size_t i = 0; i < uses.size(); ++i)
-    if ((i == 0 || uses[i - 1] != uses[i]) && (i + 1 == uses.size() || uses[i + 1] != uses[i]))
-      once.push_back(uses[i]);
-  return once;
+// Where output boundary edges, and output edges of three or more triangles, may run: along the
+// input's own boundary (edges of one triangle) and non-manifold edges (three or more), which its
+// output keeps (issue 18). Per feature curve, whether it runs along such edges (a curve never
+// leaves the edges it was traced along, so its first edge tells), and per input vertex, whether
+// such an edge ends there. From the input alone: found once for all the rounds.
+struct SpecialEdges {
+  std::vector<bool> boundary_curve, boundary_vertex, branch_curve, branch_vertex;
+};
+
+SpecialEdges special_edges(const MendContext& m) {
+  const std::vector<Edge> uses = edge_uses(m.surface);
+  std::vector<Edge> boundary, branch;
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {  // runs of equal edges
+    while (j < uses.size() && uses[j] == uses[i]) ++j;
+    if (j - i == 1) boundary.push_back(uses[i]);
+    if (j - i >= 3) branch.push_back(uses[i]);
+  }
+  const auto curves_along = [&](const std::vector<Edge>& edges) {
+    std::vector<bool> along(m.features.curves.size());
+    for (std::size_t c = 0; c < along.size(); ++c) {
+      const auto& v = m.features.curves[c].vertices;
+      along[c] =
+          v.size() >= 2 && std::binary_search(edges.begin(), edges.end(),
+                                              Edge{std::min(v[0], v[1]), std::max(v[0], v[1])});
+    }
+    return along;
+  };
+  const auto ends_of = [&](const std::vector<Edge>& edges) {
+    std::vector<bool> end(m.surface.vertices.size(), false);
+    for (const Edge& e : edges) end[e[0]] = end[e[1]] = true;
+    return end;
+  };
+  return {curves_along(boundary), ends_of(boundary), curves_along(branch), ends_of(branch)};
 }
 
-// The vertices of `rdt` (extracted from `seeds`) that an output boundary edge may join: the seeds
-// on the input's boundary curves (corners there included). Without feature seeds (rcvt mode),
-// any vertex of a surface with boundaries.
-std::vector<bool> boundary_seeds(const MendContext& m, const std::vector<Vec3>& seeds,
-                                 const SeedConstraints& constraints, const TriangleMesh& rdt) {
-  const std::size_t vertices = rdt.vertices.size();  // the seeds, then the cells' far pieces
-  const bool open = m.surface_topology.boundary_edges > 0;
-  if (constraints.empty()) return std::vector<bool>(vertices, open);
-  std::vector<bool> may(vertices, false);
-  if (!open) return may;
-  const std::vector<Edge> boundary = boundary_edges(m.surface);
-  auto on_boundary = [&](Index u, Index w) {
-    return std::binary_search(boundary.begin(), boundary.end(),
-                              Edge{std::min(u, w), std::max(u, w)});
-  };
-  std::vector<bool> curve_on_boundary(m.features.curves.size());
-  for (std::size_t c = 0; c < curve_on_boundary.size(); ++c) {
-    const auto& v = m.features.curves[c].vertices;
-    curve_on_boundary[c] = v.size() >= 2 && on_boundary(v[0], v[1]);
-  }
-  std::vector<bool> boundary_vertex(m.surface.vertices.size(), false);
-  for (const Edge& e : boundary) boundary_vertex[e[0]] = boundary_vertex[e[1]] = true;
-  for (std::size_t s = 0; s < seeds.size(); ++s)
-    may[s] = constraints.kind[s] == SeedConstraints::Kind::curve &&
-             curve_on_boundary[constraints.curve[s]];
+// Of the `vertices` of an extraction (the seeds, then the cells' far pieces), the seeds on the
+// flagged curves and the corner seeds at the flagged input vertices.
+std::vector<bool> seeds_on(const std::vector<bool>& curve, const std::vector<bool>& vertex,
+                           const MendContext& m, const SeedConstraints& constraints,
+                           std::size_t vertices) {
+  std::vector<bool> on(vertices, false);
+  for (std::size_t s = 0; s < constraints.kind.size(); ++s)
+    on[s] = constraints.kind[s] == SeedConstraints::Kind::curve && curve[constraints.curve[s]];
   for (std::size_t c = 0; c < constraints.corner_seed.size(); ++c)
-    if (boundary_vertex[m.features.corners[c]]) may[constraints.corner_seed[c]] = true;
-  return may;
+    if (vertex[m.features.corners[c]]) on[constraints.corner_seed[c]] = true;
+  return on;
+}
+
+// The vertices of `rdt` that an output boundary edge may join: the seeds on the input's boundary
+// curves (corners there included). Without feature seeds (rcvt mode), any vertex of a surface
+// with boundaries.
+std::vector<bool> boundary_seeds(const MendContext& m, const SpecialEdges& special,
+                                 const SeedConstraints& constraints, const TriangleMesh& rdt) {
+  const bool open = m.surface_topology.boundary_edges > 0;
+  if (constraints.empty() || !open) return std::vector<bool>(rdt.vertices.size(), open);
+  return seeds_on(special.boundary_curve, special.boundary_vertex, m, constraints,
+                  rdt.vertices.size());
 }
 
 // The vertices of `rdt` where an edge of three or more triangles may end, for an input that has
-// such edges itself: its output keeps them as features and adds no others (issue 18). They are
-// the seeds on the input's non-manifold curves, corners there included; without feature seeds
-// (rcvt mode), any vertex. Empty (nowhere) for an input without non-manifold edges.
-std::vector<bool> branch_seeds(const MendContext& m, const std::vector<Vec3>& seeds,
+// such edges itself: the seeds on the input's non-manifold curves, corners there included;
+// without feature seeds (rcvt mode), any vertex. Empty (nowhere) for an input without them.
+std::vector<bool> branch_seeds(const MendContext& m, const SpecialEdges& special,
                                const SeedConstraints& constraints, const TriangleMesh& rdt) {
   if (m.surface_topology.nonmanifold_edges == 0) return {};
-  const std::size_t vertices = rdt.vertices.size();  // the seeds, then the cells' far pieces
-  if (constraints.empty()) return std::vector<bool>(vertices, true);
-  const std::vector<Edge> uses = edge_uses(m.surface);
-  auto branching = [&](Index u, Index w) {
-    const auto [from, to] =
-        std::equal_range(uses.begin(), uses.end(), Edge{std::min(u, w), std::max(u, w)});
-    return to - from >= 3;
-  };
-  std::vector<bool> curve_branches(m.features.curves.size());
-  for (std::size_t c = 0; c < curve_branches.size(); ++c) {
-    const auto& v = m.features.curves[c].vertices;
-    curve_branches[c] = v.size() >= 2 && branching(v[0], v[1]);
-  }
-  std::vector<bool> branch_vertex(m.surface.vertices.size(), false);
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {  // runs of equal edges
-    while (j < uses.size() && uses[j] == uses[i]) ++j;
-    if (j - i >= 3) branch_vertex[uses[i][0]] = branch_vertex[uses[i][1]] = true;
-  }
-  std::vector<bool> may(vertices, false);
-  for (std::size_t s = 0; s < seeds.size(); ++s)
-    may[s] =
-        constraints.kind[s] == SeedConstraints::Kind::curve && curve_branches[constraints.curve[s]];
-  for (std::size_t c = 0; c < constraints.corner_seed.size(); ++c)
-    if (branch_vertex[m.features.corners[c]]) may[constraints.corner_seed[c]] = true;
-  return may;
+  if (constraints.empty()) return std::vector<bool>(rdt.vertices.size(), true);
+  return seeds_on(special.branch_curve, special.branch_vertex, m, constraints, rdt.vertices.size());
 }
 
 // An extraction, finished as it would be returned, and what it lacks: the links it cuts that
@@ -160,8 +155,8 @@ struct Assessment {
   std::tuple<bool, std::ptrdiff_t, std::size_t, std::ptrdiff_t, double> score;
 };
 
-Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vector<Vec3>& seeds,
-                  const SeedConstraints& constraints) {
+Assessment assess(const MendContext& m, const SpecialEdges& special, const TriangleMesh& rdt,
+                  const std::vector<Vec3>& seeds, const SeedConstraints& constraints) {
   Assessment a;
   a.finished = rdt;
   std::vector<FeatureLink> cut;
@@ -182,13 +177,14 @@ Assessment assess(const MendContext& m, const TriangleMesh& rdt, const std::vect
   if (in.is_manifold()) {
     a.topology_kept = t.is_manifold() && same_topology(t, in);
     if (!a.topology_kept)
-      a.defects = find_output_defects(a.finished, boundary_seeds(m, seeds, constraints, a.finished),
-                                      in.orientable);
+      a.defects = find_output_defects(
+          a.finished, boundary_seeds(m, special, constraints, a.finished), in.orientable);
   } else {
     // The input's own non-manifold edges are no defects of its output: refining around them
     // mended nothing (a T of three sheets lost 1.1 s in rounds that all kept the first output).
-    a.defects = find_output_defects(a.finished, boundary_seeds(m, seeds, constraints, a.finished),
-                                    in.orientable, branch_seeds(m, seeds, constraints, a.finished));
+    a.defects =
+        find_output_defects(a.finished, boundary_seeds(m, special, constraints, a.finished),
+                            in.orientable, branch_seeds(m, special, constraints, a.finished));
     a.topology_kept = a.defects.empty() && same_topology(t, in);
   }
   std::vector<bool> used(a.finished.vertices.size(), false);
@@ -222,10 +218,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     Assessment assessment;
     MendReport report;  // as of this round
   };
+  const SpecialEdges special = special_edges(m);
   std::optional<Round> best;
   int since_best = 0;  // rounds since the best was found
   for (int round = 0;; ++round) {
-    Assessment a = assess(m, output.mesh, seeds, constraints);
+    Assessment a = assess(m, special, output.mesh, seeds, constraints);
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.
     const std::vector<Index> vertex_seed = output.vertex_seed;

@@ -57,9 +57,9 @@ std::map<Vec3, Index> vertex_ids(const TriangleMesh& output) {
   return id;
 }
 
-// The ids of the output vertices at `seeds` (those with a vertex), sorted.
-std::vector<Index> vertices_at(const TriangleMesh& output, std::span<const Vec3> seeds) {
-  const std::map<Vec3, Index> id = vertex_ids(output);
+// The ids (`id`: vertex_ids of the output) of the output vertices at `seeds` (those with a
+// vertex), sorted.
+std::vector<Index> vertices_at(const std::map<Vec3, Index>& id, std::span<const Vec3> seeds) {
   std::vector<Index> found;
   for (const Vec3& p : seeds)
     if (const auto it = id.find(p); it != id.end()) found.push_back(it->second);
@@ -67,10 +67,10 @@ std::vector<Index> vertices_at(const TriangleMesh& output, std::span<const Vec3>
   return found;
 }
 
-// The links that are edges of the output, in output vertex ids.
+// The links that are edges of the output, in output vertex ids (`id`: vertex_ids(output)).
 std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
-                               const std::vector<Vec3>& seeds, const TriangleMesh& output) {
-  const std::map<Vec3, Index> id = vertex_ids(output);
+                               const std::vector<Vec3>& seeds, const TriangleMesh& output,
+                               const std::map<Vec3, Index>& id) {
   const std::vector<Edge> edges = sorted_edges(output);
   std::vector<Edge> traced;
   for (const FeatureLink& link : links) {
@@ -225,11 +225,12 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
   if (result.input_topology.is_manifold())
     result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
+  const std::map<Vec3, Index> output_id = vertex_ids(result.mesh);
   result.vertices_added =
-      vertices_at(result.mesh, std::span(seeds).subspan(std::min(optimized_seeds, seeds.size())));
+      vertices_at(output_id, std::span(seeds).subspan(std::min(optimized_seeds, seeds.size())));
   if (!constraints.empty()) {
     const std::vector<FeatureLink> links = feature_links(seeds, constraints, features, *curves);
-    result.feature_edges = traced_edges(links, seeds, result.mesh);
+    result.feature_edges = traced_edges(links, seeds, result.mesh, output_id);
     std::vector<Edge> wanted;
     for (const FeatureLink& link : links) wanted.push_back(link.seeds);
     std::sort(wanted.begin(), wanted.end());

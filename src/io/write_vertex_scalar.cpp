@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "cvtmesh/sizing.hpp"
+#include "cvtmesh/io.hpp"
 #include "io/atomic_file.hpp"
 #include "io/binary_out.hpp"
 
