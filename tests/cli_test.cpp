@@ -589,5 +589,42 @@ TEST(CliRemesh, BadArgumentsGetClearErrors) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out.off"));
 }
 
+TEST(Cli, SizingFromAFileAndAdaptive) {
+  const TempDir dir;
+  const TriangleMesh sphere = icosphere(3);
+  write_mesh(dir / "sphere.off", sphere);
+  {
+    std::ofstream sizes(dir / "sizes.txt");
+    for (const Vec3& p : sphere.vertices) sizes << 0.2 + 0.1 * p.z << "\n";
+  }
+  CliRun r = run_cli(dir, "remesh --json --no-hausdorff " + quoted(dir / "sphere.off") + " " +
+                              quoted(dir / "out.off") + " --sizing " + quoted(dir / "sizes.txt"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["edge_length_ratio"]["median"].get<double>(), 1.0, 0.2);
+  EXPECT_TRUE(j["same_topology"].get<bool>());
+  // One value short: a one-line error naming the file.
+  {
+    std::ofstream sizes(dir / "short.txt");
+    for (std::size_t v = 1; v < sphere.vertices.size(); ++v) sizes << "0.2\n";
+  }
+  r = run_cli(dir, "remesh " + quoted(dir / "sphere.off") + " " + quoted(dir / "out2.off") +
+                       " --sizing " + quoted(dir / "short.txt"));
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("short.txt"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out2.off"));
+  // --adaptive takes its gradation as an optional value.
+  for (const std::string flag : {"--adaptive", "--adaptive 3"}) {
+    r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 " + flag + " " +
+                         quoted(dir / "sphere.off") + " " + quoted(dir / "out3.off"));
+    ASSERT_EQ(r.code, 0) << flag << ": " << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["vertices"].get<int>(), 300) << flag;
+  }
+  EXPECT_EQ(run_cli(dir, "remesh --vertices 300 --adaptive 0 " + quoted(dir / "sphere.off") + " " +
+                             quoted(dir / "out4.off"))
+                .code,
+            2);
+}
+
 }  // namespace
 }  // namespace cvtmesh

@@ -53,7 +53,7 @@ TEST(CurveLloyd, OpenCurveSeedsSpreadEvenlyBetweenItsCornersAndKeepTheirOrder) {
   const std::vector<Vec3> before = seeds;
 
   // A few steps: the crowded links lengthen, order kept, every seed still on the curve.
-  relax_curve_seeds(seeds, c, s.curves, 3);
+  relax_curve_seeds(seeds, c, s.curves, CurveSpacing(1.0), 3);
   std::vector<double> t = arclengths(s, 0, seeds, at.size());
   EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
   EXPECT_GT(t[1] - t[0], at[1] - at[0]);
@@ -62,7 +62,7 @@ TEST(CurveLloyd, OpenCurveSeedsSpreadEvenlyBetweenItsCornersAndKeepTheirOrder) {
     EXPECT_LT(norm(s.curves.nearest(0, seeds[k]).point - seeds[k]), 1e-12);
 
   // To convergence: evenly spaced, the corners at 0 and `length` counting as neighbours.
-  relax_curve_seeds(seeds, c, s.curves, 2000);
+  relax_curve_seeds(seeds, c, s.curves, CurveSpacing(1.0), 2000);
   t = arclengths(s, 0, seeds, at.size());
   for (std::size_t k = 0; k < at.size(); ++k)
     EXPECT_NEAR(t[k], length * static_cast<double>(k + 1) / (at.size() + 1), 1e-9 * length);
@@ -79,7 +79,7 @@ TEST(CurveLloyd, ASeedOnTopOfACornerMovesOffIt) {
   const double length = s.curves.length(0);
   SeedConstraints c;
   std::vector<Vec3> seeds = seeds_on(s, 0, {1e-15 * length, 0.5 * length}, c);
-  relax_curve_seeds(seeds, c, s.curves, 1);
+  relax_curve_seeds(seeds, c, s.curves, CurveSpacing(1.0), 1);
   EXPECT_GT(s.curves.nearest(0, seeds[0]).arclength, 0.12 * length);
 }
 
@@ -91,7 +91,7 @@ TEST(CurveLloyd, ClosedCurveSeedsSpreadEvenlyAroundItKeepingTheirMean) {
                                0.9 * length};
   SeedConstraints c;
   std::vector<Vec3> seeds = seeds_on(s, 0, at, c);
-  relax_curve_seeds(seeds, c, s.curves, 5000);
+  relax_curve_seeds(seeds, c, s.curves, CurveSpacing(1.0), 5000);
   std::vector<double> t = arclengths(s, 0, seeds, at.size());
   // Each step keeps the seeds' mean arc length (the wrap-around neighbours' shifts by ± the
   // length cancel), up to a whole turn for a seed that crossed the curve's start.
@@ -110,7 +110,7 @@ TEST(CurveLloyd, ALoopWithFewerThanThreeSeedsStaysPut) {
   SeedConstraints c;
   std::vector<Vec3> seeds = seeds_on(s, 1, {0.1, 0.3}, c);
   const std::vector<Vec3> before = seeds;
-  relax_curve_seeds(seeds, c, s.curves, 10);
+  relax_curve_seeds(seeds, c, s.curves, CurveSpacing(1.0), 10);
   EXPECT_EQ(seeds, before);
 }
 

@@ -340,7 +340,8 @@ TEST(RvdIntegrals, UniformDensityPathMatchesTheGeneralOne) {
   const TriangleMesh m = torus(1, 0.4, 24, 12);
   const std::vector<Vec3> seeds = sample_surface(m, 60, 4);
   const RestrictedVoronoiDiagram rvd(m, seeds);
-  CellIntegrator uniform(rvd), general(rvd, std::vector<double>(m.vertices.size(), 1.0));
+  const std::vector<double> ones(m.vertices.size(), 1.0);
+  CellIntegrator uniform(rvd), general(rvd, ones);
   PolygonSink* sinks[] = {&uniform, &general};
   rvd.traverse(sinks);
   const CellIntegrals &u = uniform.result(), &g = general.result();

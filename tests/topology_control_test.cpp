@@ -99,7 +99,7 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   ASSERT_EQ(links.size(), 12u);  // one per edge of the cube, corner to corner
   const std::vector<FeatureLink> first(links.begin(), links.begin() + 1);
   ASSERT_EQ(first[0].curve, 0u);
-  EXPECT_EQ(mend_missing_links(seeds, c, first, curves, 0.5), 1u);
+  EXPECT_EQ(mend_missing_links(seeds, c, first, curves, CurveSpacing(0.5)), 1u);
   EXPECT_EQ(seeds.size(), 9u);  // the stray joined: no seed added
   EXPECT_EQ(c.kind.size(), 9u);
   EXPECT_EQ(c.kind[stray], SeedConstraints::Kind::curve);
@@ -109,9 +109,9 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   // Where no surface seed cuts a missing link, a new curve seed comes in at its middle if the
   // link is at least 0.9 spacings long (this one is 2), and nothing happens if it is shorter.
   const std::vector<Vec3> kept = seeds;
-  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.5), 0u);
+  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, CurveSpacing(2.5)), 0u);
   EXPECT_EQ(seeds, kept);
-  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, 2.0), 1u);
+  EXPECT_EQ(mend_missing_links(seeds, c, {links[1]}, curves, CurveSpacing(2.0)), 1u);
   ASSERT_EQ(seeds.size(), 10u);
   ASSERT_EQ(c.kind.size(), 10u);
   EXPECT_EQ(c.kind[9], SeedConstraints::Kind::curve);
@@ -127,7 +127,7 @@ TEST(MendMissingLinks, AStraySurfaceSeedJoinsTheCurveItCuts) {
   seeds.push_back(quarter - (0.1 / norm(quarter)) * quarter);  // towards the centre
   c.append(SeedConstraints::Kind::curve, third.curve == 0 ? 1 : 0);
   const std::vector<Vec3> cut = seeds;
-  EXPECT_EQ(mend_missing_links(seeds, c, {third}, curves, 1.0), 0u);
+  EXPECT_EQ(mend_missing_links(seeds, c, {third}, curves, CurveSpacing(1.0)), 0u);
   EXPECT_EQ(seeds, cut);
 }
 
@@ -258,7 +258,8 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
   const TopologyReport topology = analyze_topology(box);
   const PolishSettings polish{0, 0};
   // The scene is set up unpolished; topology control polishes as remesh does.
-  const MendContext context{box, topology, features, curves, projector, placement, 0.25, {}};
+  const CurveSpacing spacing(0.25);
+  const MendContext context{box, topology, features, curves, projector, placement, spacing, {}};
   // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's
   // length off the crease: it cuts the link, and flipping the link in would leave 26.6°. The
   // links are tried from the middle of the list on, until one where that flip can be made.

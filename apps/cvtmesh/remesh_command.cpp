@@ -23,7 +23,8 @@ namespace cvtmesh::cli {
 namespace {
 
 struct RemeshOptions {
-  std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges, seeds_file;
+  std::string input, output, optimizer = "lbfgs", mode = "both", feature_edges, seeds_file,
+                             sizing_file;
   RemeshSettings settings;
   int threads = 0;
   std::size_t samples = kRemeshReportSamples;
@@ -53,6 +54,13 @@ int run_remesh(RemeshOptions o) {
       throw InvalidArgument(o.feature_edges + ": " + e.what());
     }
   }
+  if (!o.sizing_file.empty()) {
+    const std::vector<double> lengths = read_vertex_values(o.sizing_file);
+    if (lengths.size() != new_id.size())
+      throw InputError(o.sizing_file + ": " + std::to_string(lengths.size()) + " values for the " +
+                       std::to_string(new_id.size()) + " vertices of " + o.input);
+    s.sizing.edge_lengths = values_after_repair(lengths, new_id, input.vertices.size());
+  }
   if (!o.seeds_file.empty()) {
     s.initial_seeds = read_points(o.seeds_file);
     std::vector<Vec3> sorted = s.initial_seeds;
@@ -66,9 +74,14 @@ int run_remesh(RemeshOptions o) {
   }
   s.optimizer = o.optimizer == "lloyd" ? Optimizer::lloyd : Optimizer::lbfgs;
   s.mode = o.mode == "rcvt" ? CvtMode::rcvt : o.mode == "ccvt" ? CvtMode::ccvt : CvtMode::both;
-  const std::size_t n = requested_vertex_count(input, s);
   if (!o.quiet) {
-    fmt::print(stderr, "{}: {} triangles -> {} vertices\n", o.input, input.triangles.size(), n);
+    // An adaptive count without --vertices comes from the local feature size: remesh finds it.
+    if (s.sizing.adaptive > 0 && s.vertices == 0)
+      fmt::print(stderr, "{}: {} triangles -> vertices from the local feature size\n", o.input,
+                 input.triangles.size());
+    else
+      fmt::print(stderr, "{}: {} triangles -> {} vertices\n", o.input, input.triangles.size(),
+                 requested_vertex_count(input, s));
     s.progress = [](const RemeshProgress& p) {
       fmt::print(stderr, "  {} {:4d}  energy {:.9e}  |grad| {:.3e}  {:7.2f}s\n", p.phase,
                  p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds);
@@ -115,6 +128,23 @@ void add_remesh_command(CLI::App& app, Action& run) {
   vertices->excludes(length)->excludes(relative)->excludes(seeds);
   length->excludes(relative)->excludes(seeds);
   relative->excludes(seeds);
+  auto* adaptive =
+      cmd->add_option("--adaptive", o->settings.sizing.adaptive,
+                      "Edge lengths that follow the local feature size (short on thin parts and "
+                      "tight curves), graded: G or more edge lengths to double in size")
+          ->expected(0, 1)
+          ->default_str("1.5")
+          ->check(CLI::PositiveNumber);
+  auto* sizing = cmd->add_option("--sizing", o->sizing_file,
+                                 "Target edge length per input vertex: a text file of one number "
+                                 "a line, in vertex order, or a PLY with a vertex scalar");
+  adaptive->excludes(sizing);
+  cmd->add_option("--min-edge-length", o->settings.sizing.min_edge_length,
+                  "Clamp of the target lengths (with --adaptive or --sizing)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-edge-length", o->settings.sizing.max_edge_length,
+                  "Clamp of the target lengths (with --adaptive or --sizing)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
@@ -162,8 +192,10 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_flag("--quiet", o->quiet, "No progress on stderr");
   cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
   add_threads_option(*cmd, o->threads);
-  cmd->callback([o, &run, vertices, length, relative, seeds, angle] {
-    if (vertices->count() + length->count() + relative->count() + seeds->count() == 0)
+  cmd->callback([o, &run, vertices, length, relative, seeds, angle, sizing] {
+    if (vertices->count() + length->count() + relative->count() + seeds->count() +
+            sizing->count() ==
+        0)
       throw CLI::RequiredError("--vertices, --edge-length, --edge-length-rel or --seeds-file");
     o->feature_angle_given = angle->count() > 0;
     run = [o] { return run_remesh(*o); };

@@ -37,6 +37,12 @@ void write_mesh(const std::filesystem::path& path, const TriangleMesh& mesh);
 void write_ply_with_vertex_scalar(const std::filesystem::path& path, const TriangleMesh& mesh,
                                   const std::vector<double>& values, const char* name);
 
+// One number per vertex, in the file's vertex order (cvtmesh remesh --sizing): a PLY's first
+// vertex scalar that is not a position, normal or colour (as `cvtmesh lfs` writes), or else a
+// text file of one number a line (blank lines and lines starting with # are skipped). Throws
+// InputError naming the file (and the line) for anything else, or a value that is not finite.
+std::vector<double> read_vertex_values(const std::filesystem::path& path);
+
 // Throws InvalidArgument if `output` names the same file as `input` (cvtmesh never writes over
 // its input).
 void ensure_distinct_output(const std::filesystem::path& input,

@@ -13,6 +13,7 @@
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/mesh.hpp"
+#include "cvtmesh/sizing.hpp"
 #include "cvtmesh/topology.hpp"
 
 namespace cvtmesh {
@@ -27,7 +28,10 @@ struct RemeshProgress {
 };
 
 struct RemeshSettings {
-  // Output size: exactly one of these three must be set.
+  // Output size: exactly one of these three must be set. With `sizing`, the vertex count scales
+  // the target lengths to give that many vertices, and an edge length is their median over the
+  // surface (by area); a sizing by edge_lengths or edge_length_at may also set none of the
+  // three, and is then taken as it is.
   std::size_t vertices = 0;          // number of output vertices
   double edge_length = 0;            // target edge length, in the mesh's units
   double edge_length_rel = 0;        // target edge length, as a fraction of the bbox diagonal
@@ -57,9 +61,17 @@ struct RemeshSettings {
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
   // vertices, feature curves chains of output edges. Not applied with mode rcvt.
   FeatureSettings features;
+  // Edge lengths that vary over the surface (issue 20); inactive: uniform.
+  SizingSettings sizing;
   // The report's two-sided Hausdorff distance between output and input (RemeshResult::hausdorff),
   // measured with the AABB tree the remesher built anyway; unset: not measured.
   std::optional<HausdorffSettings> hausdorff;
+};
+
+// Achieved edge length over target edge length, over the output's edges (target: the mean of
+// the targets at the edge's ends; uniform: the length that spreads the vertices evenly).
+struct EdgeLengthRatio {
+  double p5 = 0, median = 0, p95 = 0;
 };
 
 struct RemeshResult {
@@ -104,15 +116,18 @@ struct RemeshResult {
   // edges and vertices, folds), so that the output is always an oriented manifold. Each leaves
   // a hole: when this is not 0 the output's topology differs from the input's.
   std::size_t triangles_removed = 0;
-  TopologyReport input_topology;    // of the input, as analyze_topology gives it
+  TopologyReport input_topology;  // of the input, as analyze_topology gives it
+  EdgeLengthRatio edge_length_ratio;
   bool time_limit_reached = false;  // RemeshSettings::time_limit stopped the work early
   // Output (a) against input (b), when RemeshSettings::hausdorff asks for it.
   std::optional<HausdorffReport> hausdorff;
 };
 
 // The number of vertices the settings ask for: `vertices`, or the count whose equilateral
-// triangles of the given edge length cover the surface's area. Throws InvalidArgument when not
-// exactly one size is set, or it is out of range (fewer than 4 vertices, more than 50 million).
+// triangles of the given edge length cover the surface's area (with a sizing, of the target
+// lengths, which this computes: for adaptive sizing, the local feature size). Throws
+// InvalidArgument when not exactly one size is set, or it is out of range (fewer than 4 vertices,
+// more than 50 million).
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& settings);
 
 // Throws InvalidArgument for bad settings, InputError for a mesh without area, ResourceError

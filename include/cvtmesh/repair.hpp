@@ -45,6 +45,13 @@ RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id = nullpt
 std::vector<Edge> edges_after_repair(const std::vector<Edge>& edges,
                                      const std::vector<Index>& new_id);
 
+// Values per vertex of a mesh (target edge lengths read from a file), per vertex of the mesh
+// repair_mesh made of it (`new_id`, `repaired_vertex_count`): merged vertices keep the smallest
+// of their values; a vertex no value reaches gets 0. InvalidArgument when the counts differ.
+std::vector<double> values_after_repair(const std::vector<double>& values,
+                                        const std::vector<Index>& new_id,
+                                        std::size_t repaired_vertex_count);
+
 // Drops triangles with the same three vertices as an earlier one (any order or orientation),
 // keeping the first; returns how many were dropped. One of repair_mesh()'s steps.
 std::size_t remove_duplicate_triangles(TriangleMesh& mesh);

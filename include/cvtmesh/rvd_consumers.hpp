@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include "cvtmesh/rvd.hpp"
@@ -25,8 +26,9 @@ struct CellIntegrals {
 
 class CellIntegrator : public PolygonSink {
  public:
-  // `density`: one value per input vertex, > 0; empty means ρ = 1.
-  CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::vector<double> density = {});
+  // `density`: one value per input vertex, > 0; empty means ρ = 1. Not copied: it must outlive
+  // the integrator.
+  CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<const double> density = {});
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
@@ -39,7 +41,7 @@ class CellIntegrator : public PolygonSink {
     Vec3 moment;
   };
   const RestrictedVoronoiDiagram& rvd_;
-  std::vector<double> density_;
+  std::span<const double> density_;
   std::vector<std::vector<Contribution>> chunks_;
   CellIntegrals result_;
 };

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
@@ -29,5 +30,32 @@ struct LfsSettings {
 // the distance to the nearest pole of the samples), in the mesh's units; 0 for a vertex used by
 // no triangle. Throws InvalidArgument for a mesh without area or a negative gradation.
 std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettings& settings = {});
+
+// Target edge lengths for remeshing (RemeshSettings::sizing): one of three sources, then one
+// scale factor for the output size, then the clamps. The lengths are linear over each input
+// triangle. CVT gives cells of about equal energy, so a density ρ spreads seeds ∝ √ρ by area
+// (paper §4.1, [DFG99]): the remesher uses ρ = h⁻⁴ for edges about h long. (The paper's
+// ρ = 1/lfs² makes edges ∝ √lfs, coarser than Theorem 2's ε·lfs on thin parts; h ∝ lfs is what
+// geogram's gradation 1 does too.)
+struct SizingSettings {
+  // > 0: h ∝ the local feature size, graded with this gradation (see LfsSettings; 1.5 is a good
+  // default): thin parts and tight curvature get short edges.
+  double adaptive = 0;
+  std::size_t lfs_samples = 0;  // LfsSettings::samples, for adaptive
+  // Adaptive only: the lengths stay within this factor of their median (by area) either way.
+  // The raw estimate falls towards 0 where parts touch, at creases and on noise: unclamped,
+  // a few such spots would take a large share of the vertices and cells far smaller than
+  // their neighbours (diplodocus at 2k: θmin 2.9°, topology lost; clamped at 10: see README).
+  double adaptive_range = 10;
+  // Or a target length per input vertex, in the mesh's units (> 0 and finite on the vertices the
+  // triangles use).
+  std::vector<double> edge_lengths;
+  // Or a function of position (mesh units), called once per input vertex.
+  std::function<double(const Vec3&)> edge_length_at;
+  // Clamps on the lengths, in the mesh's units, applied after the scaling; 0: none.
+  double min_edge_length = 0, max_edge_length = 0;
+
+  bool active() const { return adaptive > 0 || !edge_lengths.empty() || edge_length_at; }
+};
 
 }  // namespace cvtmesh

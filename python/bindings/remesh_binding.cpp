@@ -46,18 +46,42 @@ std::vector<Edge> feature_edges_from(const py::object& edges, std::size_t vertex
   return edges_from_array(edges, vertex_count);
 }
 
+// Target edge lengths per vertex of V: a file (as `--sizing` reads it), an array, or a function
+// of a point called on each row of V.
+std::vector<double> sizing_from(const py::object& sizing, const py::object& V,
+                                std::size_t vertex_count) {
+  std::vector<double> lengths;
+  const py::module_ numpy = py::module_::import("numpy");
+  if (py::isinstance<py::str>(sizing) || py::hasattr(sizing, "__fspath__")) {
+    lengths = read_vertex_values(py::str(sizing).cast<std::string>());
+  } else if (PyCallable_Check(sizing.ptr())) {
+    for (const py::handle row : numpy.attr("asarray")(V, "float64"))
+      lengths.push_back(sizing(row).cast<double>());
+  } else {
+    lengths = numpy.attr("asarray")(sizing, "float64").attr("ravel")().cast<std::vector<double>>();
+  }
+  if (lengths.size() != vertex_count)
+    throw InvalidArgument("sizing: " + std::to_string(lengths.size()) + " values for " +
+                          std::to_string(vertex_count) + " vertices");
+  return lengths;
+}
+
 py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::size_t> vertices,
                  std::optional<double> edge_length, std::optional<double> edge_length_rel,
                  const py::object& seeds, const std::optional<std::string>& seeds_file,
                  int iterations, std::size_t samples, bool no_hausdorff, int polish_rounds,
                  int topology_rounds, const std::string& optimizer, const std::string& mode,
                  std::uint64_t seed, std::optional<double> feature_angle, bool no_features,
-                 const py::object& feature_edges, double time_limit, bool quiet, int threads,
+                 const py::object& feature_edges, std::optional<double> adaptive,
+                 const py::object& sizing, double min_edge_length, double max_edge_length,
+                 double time_limit, bool quiet, int threads,
                  const std::function<void(const RemeshProgress&)>& progress) {
   TriangleMesh input = mesh_from_arrays(V, F);
   RemeshSettings s;
   std::vector<Edge> edges;  // in the ids of V
   if (!feature_edges.is_none()) edges = feature_edges_from(feature_edges, input.vertices.size());
+  std::vector<double> lengths;  // per vertex of V
+  if (!sizing.is_none()) lengths = sizing_from(sizing, V, input.vertices.size());
   std::vector<Index> new_id;  // the ids of V in the repaired mesh
   if (const RepairReport r = repair_mesh(input, &new_id); r.noteworthy())
     PyErr_WarnEx(PyExc_UserWarning, ("cvtmesh.remesh: repaired: " + r.summary()).c_str(), 1);
@@ -67,11 +91,19 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
     throw InvalidArgument(std::string("feature_edges: ") + e.what());
   }
 
+  if (adaptive && !sizing.is_none())
+    throw InvalidArgument("adaptive and sizing exclude each other");
+  s.sizing.adaptive = adaptive.value_or(0);
+  if (!sizing.is_none())
+    s.sizing.edge_lengths = values_after_repair(lengths, new_id, input.vertices.size());
+  s.sizing.min_edge_length = min_edge_length;
+  s.sizing.max_edge_length = max_edge_length;
   const int sizes = given(vertices) + given(edge_length) + given(edge_length_rel) +
                     !seeds.is_none() + given(seeds_file);
-  if (sizes != 1)
+  if (sizes > 1 || (sizes == 0 && sizing.is_none()))
     throw InvalidArgument(
-        "give exactly one of vertices, edge_length, edge_length_rel, seeds, seeds_file");
+        "give exactly one of vertices, edge_length, edge_length_rel, seeds, seeds_file (or a "
+        "sizing alone)");
   if (vertices) s.vertices = *vertices;
   if (edge_length) s.edge_length = *edge_length;
   if (edge_length_rel) s.edge_length_rel = *edge_length_rel;
@@ -170,6 +202,16 @@ no_features : bool, default False
     Keep no sharp edges (boundaries and feature_edges are still kept).
 feature_edges : str or (k, 2) int array
     Feature edges to keep, as vertex-id pairs of the input, or a file of "a b" lines.
+adaptive : float, the gradation (1.5 is a good default)
+    Edge lengths that follow the local feature size: short on thin parts and tight curves,
+    graded so that a length doubles over at least about this many edges. The vertex count or
+    edge length (their median over the surface) sets the scale.
+sizing : str, (n,) float array, or callable(point) -> float
+    Target edge length per vertex of V (in V's units): an array, a function called on each
+    row of V, or a file (one number a line, or a PLY with a vertex scalar). Scaled to the
+    vertex count or edge length if one is given, used as it is otherwise.
+min_edge_length, max_edge_length : float, default 0 (none)
+    Clamps of the target lengths of adaptive or sizing.
 time_limit : float, seconds, default 0 (none)
     Then the optimization and the rounds stop, and the mesh of the seeds as they are is
     returned (valid; report["time_limit_reached"] says so).
@@ -218,8 +260,12 @@ void add_remesh(py::module_& m) {
         py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
         py::arg("mode") = "both", py::arg("seed") = defaults.seed,
         py::arg("feature_angle") = py::none(), py::arg("no_features") = false,
-        py::arg("feature_edges") = py::none(), py::arg("time_limit") = defaults.time_limit,
-        py::arg("quiet") = true, py::arg("threads") = 0, py::arg("progress") = nullptr);
+        py::arg("feature_edges") = py::none(), py::arg("adaptive") = py::none(),
+        py::arg("sizing") = py::none(),
+        py::arg("min_edge_length") = defaults.sizing.min_edge_length,
+        py::arg("max_edge_length") = defaults.sizing.max_edge_length,
+        py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true,
+        py::arg("threads") = 0, py::arg("progress") = nullptr);
 }
 
 }  // namespace cvtmesh::python

@@ -94,6 +94,23 @@ class RemeshTest(unittest.TestCase):
                                  no_hausdorff=True)
         self.assertEqual(r["vertices"], 300)
 
+    def test_sizing_and_adaptive(self):
+        # Target lengths from a function of the position, as they are: followed at the median.
+        _, _, r = cvtmesh.remesh(self.V, self.F, sizing=lambda p: 0.12 + 0.04 * p[0],
+                                 no_hausdorff=True)
+        self.assertAlmostEqual(r["edge_length_ratio"]["median"], 1, delta=0.2)
+        # The same per vertex as an array, scaled to a vertex count.
+        lengths = 0.12 + 0.04 * self.V[:, 0]
+        V2, _, r = cvtmesh.remesh(self.V, self.F, 400, sizing=lengths, no_hausdorff=True)
+        self.assertEqual(len(V2), 400)
+        V2, _, r = cvtmesh.remesh(self.V, self.F, 400, adaptive=1.5, no_hausdorff=True)
+        self.assertEqual(len(V2), 400)
+        self.assertTrue(r["same_topology"])
+        with self.assertRaisesRegex(ValueError, "sizing"):
+            cvtmesh.remesh(self.V, self.F, sizing=lengths[1:])
+        with self.assertRaisesRegex(ValueError, "exclude"):
+            cvtmesh.remesh(self.V, self.F, 400, sizing=lengths, adaptive=2)
+
     def test_progress_callback_sees_every_iteration(self):
         seen = []
         _, _, r = cvtmesh.remesh(self.V, self.F, vertices=300, progress=seen.append,

@@ -75,7 +75,8 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
   interrupt_.check();
   ++evaluations_;
   const RestrictedVoronoiDiagram rvd(surface_, seeds);
-  CellIntegrator integrator(rvd);
+  CellIntegrator integrator(
+      rvd, density_ ? std::span<const double>(*density_) : std::span<const double>{});
   InterruptSink stop(interrupt_);
   PolygonSink* sinks[] = {&integrator, &stop};
   rvd.traverse(sinks);

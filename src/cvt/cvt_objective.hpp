@@ -17,15 +17,17 @@ namespace cvtmesh {
 class CvtObjective {
  public:
   // Restricted CVT without a projector; constrained CVT with one. Evaluations check
-  // `interrupt` (a cancel throws Cancelled, even during an RVD pass).
+  // `interrupt` (a cancel throws Cancelled, even during an RVD pass). `density`: ρ per surface
+  // vertex (eq. 1), null or empty for ρ = 1.
   CvtObjective(const TriangleMesh& surface, const SurfaceProjector* projector,
                const SeedConstraints* features = nullptr, const CurveProjector* curves = nullptr,
-               const Interrupt* interrupt = nullptr)
+               const Interrupt* interrupt = nullptr, const std::vector<double>* density = nullptr)
       : surface_(surface),
         projector_(projector),
         features_(features),
         curves_(curves),
-        interrupt_(interrupt ? *interrupt : kNever) {}
+        interrupt_(interrupt ? *interrupt : kNever),
+        density_(density && !density->empty() ? density : nullptr) {}
 
   struct Evaluation {
     double energy;
@@ -37,6 +39,8 @@ class CvtObjective {
   int evaluations() const { return evaluations_; }
   // What stops the work done with this objective (the optimization, polishing, topology control).
   const Interrupt& interrupt() const { return interrupt_; }
+  // ρ per surface vertex; null for ρ = 1.
+  const std::vector<double>* density() const { return density_; }
 
   // Constrained CVT only. Moves each seed to its nearest surface point (curve seeds: curve point;
   // corner seeds: their corner) and returns, per seed, how to constrain its gradient. A seed that
@@ -65,6 +69,7 @@ class CvtObjective {
   const CurveProjector* curves_;
   static inline const Interrupt kNever;
   const Interrupt& interrupt_;
+  const std::vector<double>* density_;
   int evaluations_ = 0;
   std::vector<SurfaceProjector::Foot> hints_;  // the feet of the last projection
 };

@@ -91,8 +91,10 @@ TriangleMesh among_seeds(const TriangleMesh& mesh, std::size_t n) {
   return out;
 }
 
-// The input triangles `ids` as a mesh of their own.
-TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids) {
+// The input triangles `ids` as a mesh of their own; `original`, if given, gets each of its
+// vertices' id in `surface`.
+TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids,
+                         std::vector<Index>* original = nullptr) {
   TriangleMesh sub;
   std::vector<Index> renumbered(surface.vertices.size(), kUnset);
   for (Index t : ids) {
@@ -101,6 +103,7 @@ TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& 
       if (renumbered[v] == kUnset) {
         renumbered[v] = static_cast<Index>(sub.vertices.size());
         sub.vertices.push_back(surface.vertices[v]);
+        if (original) original->push_back(v);
       }
       v = renumbered[v];
     }
@@ -155,10 +158,11 @@ std::vector<Index> intruders(const CellCorners& corners, const std::vector<Index
 // RVD would give its far parts to the nearest local cell, whose centroid would then pull its
 // seed many cells away. So any seed nearer to a corner of a moving cell joins `local`, and the
 // step is computed again, until the moving cells are exact.
-void local_lloyd(const TriangleMesh& patch, std::vector<Index> local,
-                 const std::vector<Index>& moving, std::vector<Vec3>& seeds,
-                 const CvtObjective& objective, int steps, const PointTree& tree,
-                 const std::vector<Vec3>& fixed) {
+// `density`: ρ per vertex of the patch, empty for ρ = 1.
+void local_lloyd(const TriangleMesh& patch, const std::vector<double>& density,
+                 std::vector<Index> local, const std::vector<Index>& moving,
+                 std::vector<Vec3>& seeds, const CvtObjective& objective, int steps,
+                 const PointTree& tree, const std::vector<Vec3>& fixed) {
   const auto is_moving = [&](Index k) {
     return std::binary_search(moving.begin(), moving.end(), local[k]);
   };
@@ -167,7 +171,7 @@ void local_lloyd(const TriangleMesh& patch, std::vector<Index> local,
     positions.resize(local.size());
     for (std::size_t k = 0; k < local.size(); ++k) positions[k] = seeds[local[k]];
     const RestrictedVoronoiDiagram rvd(patch, positions);
-    CellIntegrator integrator(rvd);
+    CellIntegrator integrator(rvd, density);
     RestrictedDelaunayBuilder rdt(rvd);
     CellCorners corners(is_moving);
     PolygonSink* sinks[] = {&integrator, &rdt, &corners};
@@ -237,11 +241,15 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     // One more ring of cells gives the moving cells room to shift within the patch, and one
     // more shapes the patch's cells.
     const std::vector<Index> margin = grown(moving, rdt_of_seeds);
-    const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin));
+    std::vector<Index> original;
+    const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin), &original);
+    std::vector<double> density;
+    if (const std::vector<double>* rho = objective.density())
+      for (const Index v : original) density.push_back((*rho)[v]);
     const std::vector<Vec3> fixed = seeds;
     const PointTree tree(fixed);
-    local_lloyd(patch, grown(margin, rdt_of_seeds), moving, seeds, objective, settings.steps, tree,
-                fixed);
+    local_lloyd(patch, density, grown(margin, rdt_of_seeds), moving, seeds, objective,
+                settings.steps, tree, fixed);
   }
 }
 

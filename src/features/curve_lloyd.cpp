@@ -26,19 +26,21 @@ std::vector<double> lloyd_step(const std::vector<double>& t, double length, bool
 }  // namespace
 
 void relax_curve_seeds(std::vector<Vec3>& seeds, const SeedConstraints& c,
-                       const CurveProjector& curves, int steps) {
+                       const CurveProjector& curves, const CurveSpacing& spacing, int steps) {
   const SeedsAlongCurves along = seeds_along_curves(seeds, c, curves);
   std::set<Vec3> occupied(seeds.begin(), seeds.end());
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& seeds_on = along[k];
     // A loop of fewer than three has no spacing to even (and place_feature_seeds gives it three).
     if (seeds_on.empty() || (curves.closed(k) && seeds_on.size() < 3)) continue;
+    // Lloyd in target lengths (steps along the curve): even there, the seeds follow the sizes.
     std::vector<double> t;
-    for (const auto& [arclength, s] : seeds_on) t.push_back(arclength);
-    for (int step = 0; step < steps; ++step) t = lloyd_step(t, curves.length(k), curves.closed(k));
+    for (const auto& [arclength, s] : seeds_on) t.push_back(spacing.steps(k, 0, arclength));
+    const double whole = spacing.steps(k, 0, curves.length(k));
+    for (int step = 0; step < steps; ++step) t = lloyd_step(t, whole, curves.closed(k));
     for (std::size_t i = 0; i < t.size(); ++i) {
       Vec3& seed = seeds[seeds_on[i].second];
-      const Vec3 p = curves.at(k, t[i]);
+      const Vec3 p = curves.at(k, spacing.arclength(k, t[i]));
       if (p == seed || !occupied.insert(p).second) continue;
       occupied.erase(seed);
       seed = p;

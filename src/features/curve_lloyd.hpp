@@ -10,14 +10,14 @@
 
 namespace cvtmesh {
 
-// `steps` Jacobi steps of one-dimensional Lloyd with uniform density along each curve: each
-// curve seed moves, by arc length, to the middle of its 1D Voronoi cell, whose ends are halfway
-// to its neighbours along the curve (the corners at an open curve's ends stay put). Each step
-// keeps the seeds' order and averages each arc length with its neighbours' (weights 1/4, 1/2,
-// 1/4): a diffusion, so k steps smooth the spacing over about √(k/2) seeds either way. A seed
-// whose new point another seed already occupies stays where it is.
+// `steps` Jacobi steps of one-dimensional Lloyd along each curve, measured in target lengths
+// (`spacing`; uniform: arc length): each curve seed moves to the middle of its 1D Voronoi cell,
+// whose ends are halfway to its neighbours along the curve (the corners at an open curve's ends
+// stay put). Each step keeps the seeds' order and averages each arc length with its neighbours'
+// (weights 1/4, 1/2, 1/4): a diffusion, so k steps smooth the spacing over about √(k/2) seeds
+// either way. A seed whose new point another seed already occupies stays where it is.
 void relax_curve_seeds(std::vector<Vec3>& seeds, const SeedConstraints& c,
-                       const CurveProjector& curves, int steps);
+                       const CurveProjector& curves, const CurveSpacing& spacing, int steps);
 
 // The constraints with every curve seed held where it is, as corner seeds are: the CCVT that
 // follows relaxes the surface seeds around the evened curve seeds.

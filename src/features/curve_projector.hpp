@@ -24,6 +24,8 @@ class CurveProjector {
   // The point at arc length s along curve c (taken modulo the length on a closed curve).
   Vec3 at(std::size_t c, double s) const;
   double length(std::size_t c) const { return curves_[c].arclength.back(); }
+  // The arc length at each vertex of curve c's polyline (a closed curve's first one again last).
+  const std::vector<double>& arclengths(std::size_t c) const { return curves_[c].arclength; }
   bool closed(std::size_t c) const { return curves_[c].closed; }
   std::size_t size() const { return curves_.size(); }
 

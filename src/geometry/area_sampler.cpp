@@ -16,6 +16,14 @@ AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed) : mesh_(m
   }
 }
 
+AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed,
+                         const std::vector<double>& weights)
+    : mesh_(mesh), seed_(seed) {
+  cumulative_.reserve(weights.size());
+  double sum = 0;
+  for (const double w : weights) cumulative_.push_back(sum += w);
+}
+
 AreaSampler::Sample AreaSampler::sample(std::uint64_t k) const {
   CounterRng rng(seed_, k);
   const double target = rng.uniform() * cumulative_.back();

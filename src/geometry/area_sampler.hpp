@@ -12,6 +12,8 @@ namespace cvtmesh {
 class AreaSampler {
  public:
   AreaSampler(const TriangleMesh& mesh, std::uint64_t seed);
+  // Triangle t is picked with probability ∝ weights[t] (uniform inside it) instead of its area.
+  AreaSampler(const TriangleMesh& mesh, std::uint64_t seed, const std::vector<double>& weights);
   struct Sample {
     Vec3 point;
     std::size_t triangle;  // the triangle it lies on
@@ -23,7 +25,7 @@ class AreaSampler {
  private:
   const TriangleMesh& mesh_;
   std::uint64_t seed_;
-  std::vector<double> cumulative_;  // prefix sums of triangle areas
+  std::vector<double> cumulative_;  // prefix sums of triangle areas (or weights)
 };
 
 }  // namespace cvtmesh

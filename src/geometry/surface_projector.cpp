@@ -22,6 +22,7 @@ using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 struct SurfaceProjector::Tree {
   Triangles triangles;
   std::vector<Vec3> normals;
+  std::vector<std::size_t> surface_id;  // per triangle, its id in the surface
   AabbTree tree;
   std::vector<Vec3> centroids;  // of `triangles`: the start of a query with no hint
   std::optional<PointTree> nearest_centroid;
@@ -47,6 +48,7 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
       tree_->triangles.emplace_back(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z),
                                     Kernel::Point_3(c.x, c.y, c.z));
       tree_->normals.push_back(length > 0 ? (1 / length) * n : Vec3{});
+      tree_->surface_id.push_back(t);
     }
     if (!tree_->triangles.empty()) break;
   }
@@ -76,6 +78,10 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint
       tree_->triangles.begin() + static_cast<std::ptrdiff_t>(hint.triangle)};
   return tree_->foot(
       tree_->tree.closest_point_and_primitive(Kernel::Point_3(p.x, p.y, p.z), start));
+}
+
+std::size_t SurfaceProjector::surface_triangle(std::size_t triangle) const {
+  return tree_->surface_id[triangle];
 }
 
 double SurfaceProjector::squared_distance_to(const Vec3& p, std::size_t triangle) const {

@@ -25,6 +25,8 @@ class SurfaceProjector {
   // The squared distance from p to one triangle (as numbered inside the projector): an upper
   // bound on the squared distance to the surface, far cheaper than a search.
   double squared_distance_to(const Vec3& p, std::size_t triangle) const;
+  // A triangle's id in the surface given, from its id inside the projector.
+  std::size_t surface_triangle(std::size_t triangle) const;
 
  private:
   struct Tree;

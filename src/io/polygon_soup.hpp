@@ -11,6 +11,7 @@ namespace cvtmesh {
 struct PolygonSoup {
   std::vector<std::array<double, 3>> points;
   std::vector<std::vector<std::size_t>> polygons;
+  std::vector<double> vertex_scalar;  // when asked for (read_ply's `with_scalar`)
 };
 
 }  // namespace cvtmesh

@@ -73,8 +73,9 @@ enum class Format { ascii, binary_little_endian, binary_big_endian };
 
 class PlyReader {
  public:
-  PlyReader(const std::filesystem::path& path, std::istream& in, std::uintmax_t file_size)
-      : path_(path), in_(in), file_size_(file_size) {}
+  PlyReader(const std::filesystem::path& path, std::istream& in, std::uintmax_t file_size,
+            bool with_scalar)
+      : path_(path), in_(in), file_size_(file_size), with_scalar_(with_scalar) {}
 
   PolygonSoup read() {
     read_header();
@@ -180,6 +181,7 @@ class PlyReader {
             fail("PLY element vertex has no scalar property '" + name + "'");
           coordinate_[axis] = *p;
         }
+        if (with_scalar_) find_scalar(element);
       } else if (element.name == "face") {
         face_element_ = e;
         auto p = find_property(element, "vertex_indices");
@@ -190,6 +192,21 @@ class PlyReader {
         indices_ = *p;
       }
     }
+  }
+
+  // The vertex scalar asked for: the first that is no position, normal or colour.
+  void find_scalar(const Element& element) {
+    static constexpr std::string_view kKnown[] = {"x",  "y",   "z",     "nx",   "ny",
+                                                  "nz", "red", "green", "blue", "alpha"};
+    for (std::size_t p = 0; p < element.properties.size(); ++p) {
+      const Property& property = element.properties[p];
+      if (!property.list &&
+          std::find(std::begin(kKnown), std::end(kKnown), property.name) == std::end(kKnown)) {
+        scalar_ = p;
+        return;
+      }
+    }
+    fail("PLY element vertex has no scalar property besides positions, normals and colours");
   }
 
   static std::optional<std::size_t> find_property(const Element& element, std::string_view name) {
@@ -215,6 +232,7 @@ class PlyReader {
           const double value = scalar(property.type, element, item);
           for (int axis = 0; axis < 3; ++axis)
             if (vertices && coordinate_[axis] == p) point[axis] = value;
+          if (vertices && scalar_ == p) soup_.vertex_scalar.push_back(value);
           continue;
         }
         const std::uint64_t count = list_count(property, element, item);
@@ -352,7 +370,9 @@ class PlyReader {
   std::uint64_t vertex_count_ = 0;
   std::size_t coordinate_[3] = {0, 0, 0};
   std::size_t indices_ = 0;
-  std::string data_;  // everything after the header
+  bool with_scalar_;
+  std::optional<std::size_t> scalar_;  // the vertex scalar's property, when asked for
+  std::string data_;                   // everything after the header
   std::size_t at_ = 0;
   std::size_t line_number_ = 0;
   PolygonSoup soup_;
@@ -360,9 +380,9 @@ class PlyReader {
 
 }  // namespace
 
-PolygonSoup read_ply(const std::filesystem::path& path, std::istream& in,
-                     std::uintmax_t file_size) {
-  return PlyReader(path, in, file_size).read();
+PolygonSoup read_ply(const std::filesystem::path& path, std::istream& in, std::uintmax_t file_size,
+                     bool with_scalar) {
+  return PlyReader(path, in, file_size, with_scalar).read();
 }
 
 }  // namespace cvtmesh

@@ -14,7 +14,10 @@ namespace cvtmesh {
 
 // Reads an ASCII, binary little-endian or binary big-endian PLY file: the x, y, z properties of
 // element "vertex" and the vertex_indices (or vertex_index) list of element "face"; every other
-// element and property is read past. Throws InputError naming `path` on anything malformed.
-PolygonSoup read_ply(const std::filesystem::path& path, std::istream& in, std::uintmax_t file_size);
+// element and property is read past. `with_scalar`: also the first scalar vertex property that
+// is not a position, normal or colour (PolygonSoup::vertex_scalar), which must exist. Throws
+// InputError naming `path` on anything malformed.
+PolygonSoup read_ply(const std::filesystem::path& path, std::istream& in, std::uintmax_t file_size,
+                     bool with_scalar = false);
 
 }  // namespace cvtmesh

@@ -192,6 +192,23 @@ std::vector<Edge> edges_after_repair(const std::vector<Edge>& edges,
   return renumbered;
 }
 
+std::vector<double> values_after_repair(const std::vector<double>& values,
+                                        const std::vector<Index>& new_id,
+                                        std::size_t repaired_vertex_count) {
+  if (values.size() != new_id.size())
+    throw InvalidArgument(std::to_string(values.size()) + " values for a mesh of " +
+                          std::to_string(new_id.size()) + " vertices");
+  std::vector<double> out(repaired_vertex_count, 0);
+  std::vector<bool> seen(repaired_vertex_count, false);
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    const Index to = new_id[v];
+    if (to == kRemovedVertex) continue;
+    out[to] = seen[to] ? std::min(out[to], values[v]) : values[v];
+    seen[to] = true;
+  }
+  return out;
+}
+
 RepairReport diagnose_repairs(const TriangleMesh& mesh) {
   TriangleMesh copy = mesh;
   return repair_mesh(copy);

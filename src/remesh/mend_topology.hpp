@@ -20,7 +20,7 @@ struct MendContext {
   const CurveProjector& curves;
   const SurfaceProjector& projector;
   const CvtObjective& placement;  // where seeds may go (see extract_polished)
-  double spacing;                 // the target edge length
+  const CurveSpacing& spacing;    // target edge lengths along the curves
   PolishSettings polish;
 };
 

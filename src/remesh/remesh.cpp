@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <span>
 
@@ -18,9 +19,12 @@
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
+#include "geometry/area_sampler.hpp"
 #include "quality/hausdorff_with_tree.hpp"
+#include "remesh/edge_length_ratio.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
+#include "sizing/size_field.hpp"
 #include "system/memory_budget.hpp"
 
 namespace cvtmesh {
@@ -84,14 +88,25 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
   return traced;
 }
 
-// requested_vertex_count for a mesh of about unit size (see size_exponent in cvtmesh/mesh.hpp).
-std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
+// One output size at most; none only for initial seeds (their count is the size) or target
+// lengths given as they are (RemeshSettings).
+void check_output_size(const RemeshSettings& s) {
   const int given = (s.vertices > 0) + (s.edge_length != 0) + (s.edge_length_rel != 0);
-  if (given != 1)
+  const bool sizes_as_given = s.sizing.active() && !(s.sizing.adaptive > 0);
+  if (given > 1 || (given == 0 && !sizes_as_given && s.initial_seeds.empty()))
     throw InvalidArgument(
         "give exactly one output size: a vertex count, an edge length, or a relative edge length");
+}
+
+// requested_vertex_count for a mesh of about unit size (see size_exponent in cvtmesh/mesh.hpp),
+// with the size field of its sizing, if any.
+std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s,
+                              const SizeField* field) {
+  check_output_size(s);
   double count = static_cast<double>(s.vertices);
-  if (s.vertices == 0) {
+  if (s.vertices == 0 && field) {
+    count = std::round(field->vertex_count());
+  } else if (s.vertices == 0) {
     const double h =
         s.edge_length != 0 ? s.edge_length : s.edge_length_rel * bounding_box(mesh).diagonal();
     if (!(h > 0) || !std::isfinite(h)) throw InvalidArgument("the edge length must be positive");
@@ -107,6 +122,16 @@ std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s)
   return static_cast<std::size_t>(count);
 }
 
+// `count` random seeds: area-uniform, or with the density of the target lengths (paper §4.1).
+std::vector<Vec3> random_seeds(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
+                               const SizeField* field) {
+  if (!field) return sample_surface(mesh, count, seed);
+  const AreaSampler sampler(mesh, seed, field->seed_weights());
+  std::vector<Vec3> points(count);
+  for (std::size_t k = 0; k < count; ++k) points[k] = sampler(k);
+  return points;
+}
+
 // The remesher proper, on a mesh of about unit size.
 RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settings) {
   const auto start = Clock::now();
@@ -120,21 +145,32 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
   if (!(settings.time_limit >= 0)) throw InvalidArgument("the time limit must not be negative");
   const Interrupt interrupt(settings.cancel, settings.time_limit, start);
   if (!(surface_area(input) > 0)) throw InputError("the surface has no area");
+  check_output_size(settings);
   // Everything below works on the input in spatial order (issue 19: RVD walks on a file in no
   // spatial order are up to 10x longer); the features are reported in the caller's ids.
   const SpatiallySorted sorted = spatially_sorted(input);
   const TriangleMesh& mesh = sorted.mesh;
   RemeshResult result;
   Features features;  // result.features, in the ids of `mesh`
-  std::vector<Vec3> seeds =
-      settings.initial_seeds.empty()
-          ? sample_surface(mesh, unit_vertex_count(mesh, settings), settings.seed)
-          : settings.initial_seeds;
+  // Target lengths that vary (issue 20) enter the CVT as its density ρ (eq. 1).
+  const std::optional<SizeField> sizes = make_size_field(mesh, sorted.new_id, settings);
+  const SizeField* field = sizes ? &*sizes : nullptr;
+  const std::size_t count = settings.initial_seeds.empty()
+                                ? unit_vertex_count(mesh, settings, field)
+                                : settings.initial_seeds.size();
+  check_memory_for(input.triangles.size(), count);
+  std::vector<Vec3> seeds = settings.initial_seeds.empty()
+                                ? random_seeds(mesh, count, settings.seed, field)
+                                : settings.initial_seeds;
+  // The edge length of the same count spread evenly: the scale of feature detection, and where
+  // ρ = 1.
   const double spacing = edge_length_for(surface_area(mesh), seeds.size());
+  const std::vector<double> density = sizes ? sizes->density(spacing) : std::vector<double>{};
   // What only CCVT needs (the AABB tree, the features: 0.45 s on igea's 270k triangles, all
   // serial) is built while RCVT runs, so that it fills the cores RCVT leaves idle.
   std::optional<SurfaceProjector> projector;
   std::optional<CurveProjector> curves;
+  std::optional<CurveSpacing> curve_spacing;
   tbb::task_group ccvt_setup;
   ccvt_setup.run([&] {
     projector.emplace(mesh);
@@ -143,6 +179,7 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     result.features = detect_features(input, feature_settings);
     features = renumbered(result.features, sorted.new_id);
     curves.emplace(mesh, features);
+    curve_spacing.emplace(sizes ? CurveSpacing(*curves, features, *sizes) : CurveSpacing(spacing));
     result.input_topology = analyze_topology(mesh);  // what topology control compares with
   });
   SeedConstraints constraints;
@@ -154,7 +191,7 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     if (interrupt.out_of_time()) return;
     const auto phase_start = Clock::now();
     CvtObjective objective(mesh, bound ? &*projector : nullptr, bound, bound ? &*curves : nullptr,
-                           &interrupt);
+                           &interrupt, &density);
     const PhaseOptions options{name, settings.iterations, settings.gradient_tolerance,
                                &settings.progress, start};
     const PhaseResult phase = settings.optimizer == Optimizer::lbfgs
@@ -177,19 +214,19 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     // The paper's two stages (§4.3): the RCVT spread the seeds; the nearest to the features now
     // move onto them, and CCVT optimizes with them bound there.
     if (!features.empty())
-      constraints = place_feature_seeds(seeds, mesh, features, *curves, spacing);
+      constraints = place_feature_seeds(seeds, mesh, features, *curves, *curve_spacing);
     run_phase("ccvt", &constraints, result.seconds_ccvt);
     // Surface seeds that took over a stretch of a curve join it, and CCVT resumes. Then the curve
     // seeds even out along their curves and the surface seeds relax around them, held there;
     // that rarely leaves a stray, but if it does, another round.
     for (int round = 0; round < kSnapRounds && !constraints.empty() && !interrupt.timed_out();
          ++round) {
-      const std::size_t joined = snap_stray_seeds(seeds, constraints, *curves, spacing);
+      const std::size_t joined = snap_stray_seeds(seeds, constraints, *curves, *curve_spacing);
       if (round > 0 && joined == 0) break;
       double more = 0;
       if (joined > 0) run_phase("ccvt", &constraints, more);
       result.seconds_ccvt += more;
-      relax_curve_seeds(seeds, constraints, *curves, kCurveLloydSteps);
+      relax_curve_seeds(seeds, constraints, *curves, *curve_spacing, kCurveLloydSteps);
       const SeedConstraints held = curve_seeds_held(constraints, seeds);
       run_phase("ccvt-surface", &held, more);
       result.seconds_ccvt += more;
@@ -199,15 +236,15 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
   // Output vertices lie on the surface: project (a no-op after CCVT), then triangulate, with
   // local Lloyd steps around any badly shaped triangles.
   const auto extraction_start = Clock::now();
-  CvtObjective placement(mesh, &*projector, &constraints, &*curves, &interrupt);
+  CvtObjective placement(mesh, &*projector, &constraints, &*curves, &interrupt, &density);
   placement.project(seeds);
   PolishedOutput output = extract_polished(mesh, seeds, placement, {settings.polish_rounds});
   result.polish_rounds = output.rounds;
   result.defects_polished = output.defects;
   // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
   const MendContext context{
-      mesh,    result.input_topology,   features, *curves, *projector, placement,
-      spacing, {settings.polish_rounds}};
+      mesh,           result.input_topology,   features, *curves, *projector, placement,
+      *curve_spacing, {settings.polish_rounds}};
   MendReport mends;
   const std::size_t optimized_seeds = seeds.size();  // the rounds append theirs
   output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
@@ -237,6 +274,7 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
     result.feature_edges_missing = wanted.size() - result.feature_edges.size();
   }
+  result.edge_length_ratio = edge_length_ratio(result.mesh, *projector, field, spacing);
   result.seconds_extraction = seconds(extraction_start);
   result.time_limit_reached = interrupt.timed_out();
   interrupt.check();
@@ -250,6 +288,14 @@ RemeshSettings scaled_settings(RemeshSettings s, int exponent) {
   s.edge_length = std::ldexp(s.edge_length, exponent);
   s.features.scale = std::ldexp(s.features.scale, exponent);
   for (Vec3& p : s.initial_seeds) p = scaled_by_power_of_two(p, exponent);
+  SizingSettings& z = s.sizing;
+  for (double& h : z.edge_lengths) h = std::ldexp(h, exponent);
+  if (z.edge_length_at)
+    z.edge_length_at = [f = std::move(z.edge_length_at), exponent](const Vec3& p) {
+      return std::ldexp(f(scaled_by_power_of_two(p, -exponent)), exponent);
+    };
+  z.min_edge_length = std::ldexp(z.min_edge_length, exponent);
+  z.max_edge_length = std::ldexp(z.max_edge_length, exponent);
   return s;
 }
 
@@ -257,18 +303,28 @@ RemeshSettings scaled_settings(RemeshSettings s, int exponent) {
 
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
   const int exponent = size_exponent(mesh);
-  if (exponent == 0) return unit_vertex_count(mesh, s);
-  return unit_vertex_count(scaled_by_power_of_two(mesh, -exponent), scaled_settings(s, -exponent));
+  const TriangleMesh unit = scaled_by_power_of_two(mesh, -exponent);
+  const RemeshSettings unit_settings = scaled_settings(s, -exponent);
+  check_output_size(unit_settings);
+  std::optional<SizeField> field;
+  if (s.sizing.active() && s.vertices == 0) {
+    std::vector<Index> same(mesh.vertices.size());
+    std::iota(same.begin(), same.end(), Index{0});
+    field = make_size_field(unit, same, unit_settings);
+  }
+  return unit_vertex_count(unit, unit_settings, field ? &*field : nullptr);
 }
 
 RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   // Issue 22: the work is done on the input scaled by a power of two to about unit size, and
   // the output scaled back, both exactly; a shape in any units gives the same output up to the
   // scale.
-  // A job that cannot fit fails now, not when the system kills it after minutes of work.
-  check_memory_for(input.triangles.size(), settings.initial_seeds.empty()
-                                               ? requested_vertex_count(input, settings)
-                                               : settings.initial_seeds.size());
+  // A job that cannot fit fails now, before any work, when its size is known without the
+  // sizing's lengths (remesh_unit checks again with them).
+  if (!settings.initial_seeds.empty() || settings.vertices > 0 || !settings.sizing.active())
+    check_memory_for(input.triangles.size(), settings.initial_seeds.empty()
+                                                 ? requested_vertex_count(input, settings)
+                                                 : settings.initial_seeds.size());
   const int exponent = size_exponent(input);
   if (exponent == 0) return remesh_unit(input, settings);
   RemeshResult r =

@@ -48,6 +48,9 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["time_limit_reached"] = r.time_limit_reached;
   j["feature_hausdorff_max_pct"] = percent_or_null(fd.max, diagonal);
   j["feature_hausdorff_mean_pct"] = percent_or_null(fd.mean, diagonal);
+  j["edge_length_ratio"] = {{"p5", r.edge_length_ratio.p5},
+                            {"median", r.edge_length_ratio.median},
+                            {"p95", r.edge_length_ratio.p95}};
   j["iterations"] = r.iterations;
   j["rvd_evaluations"] = r.rvd_evaluations;
   j["energy_initial"] = r.energy_initial;
@@ -74,6 +77,9 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
         r.feature_edges.size(), r.feature_edges_missing, r.links_mended, distance, sector);
   }
+  text += fmt::format(
+      "  sizing    edge length / target: median {:.3f}, 5th-95th percentile {:.3f}-{:.3f}\n",
+      r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
   text += fmt::format(
       "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
       "triangles polished in {} rounds\n",

@@ -73,8 +73,8 @@ std::vector<Vec3> CellIntegrals::gradient(const std::vector<Vec3>& seeds) const 
   return g;
 }
 
-CellIntegrator::CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::vector<double> density)
-    : rvd_(rvd), density_(std::move(density)) {
+CellIntegrator::CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<const double> density)
+    : rvd_(rvd), density_(density) {
   if (!density_.empty() && density_.size() != rvd.surface().vertices.size())
     throw InvalidArgument("density needs one value per input vertex");
   if (std::any_of(density_.begin(), density_.end(), [](double r) { return !(r > 0); }))

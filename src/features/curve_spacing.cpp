@@ -1,0 +1,50 @@
+#include "features/curve_spacing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sizing/size_field.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// Linear interpolation of y at x over the sorted table xs (clamped to its ends).
+double interpolated(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+  if (x <= xs.front()) return ys.front();
+  if (x >= xs.back()) return ys.back();
+  const std::size_t k = static_cast<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) -
+                                                 xs.begin());  // xs[k-1] <= x < xs[k]
+  const double span = xs[k] - xs[k - 1];
+  const double t = span > 0 ? (x - xs[k - 1]) / span : 0;
+  return ys[k - 1] + t * (ys[k] - ys[k - 1]);
+}
+
+}  // namespace
+
+CurveSpacing::CurveSpacing(const CurveProjector& curves, const Features& features,
+                           const SizeField& sizes) {
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    std::vector<Index> polyline = features.curves[c].vertices;
+    if (curves.closed(c)) polyline.push_back(polyline.front());
+    arclength_.push_back(curves.arclengths(c));
+    steps_.push_back(sizes.steps_along(polyline));
+  }
+}
+
+double CurveSpacing::at(std::size_t c, double s) const {
+  if (spacing_ > 0) return s / spacing_;
+  // A closed curve's arc lengths past its end wrap around (once, for a link's end).
+  const double whole = length(c);
+  const double laps = s > whole && whole > 0 ? std::floor(s / whole) : 0;
+  return laps * steps_[c].back() + interpolated(arclength_[c], steps_[c], s - laps * whole);
+}
+
+double CurveSpacing::arclength(std::size_t c, double u) const {
+  if (spacing_ > 0) return u * spacing_;
+  const double whole = steps_[c].back();
+  const double laps = u > whole && whole > 0 ? std::floor(u / whole) : 0;
+  return laps * length(c) + interpolated(steps_[c], arclength_[c], u - laps * whole);
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,189 @@
+#include "sizing/size_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cvtmesh/errors.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// Seeds per unit area for edges of length h: equilateral triangles, two per vertex.
+double seeds_per_area(double h) {
+  return 1 / (std::sqrt(3.0) / 2 * h * h);
+}
+
+std::vector<bool> used_vertices(const TriangleMesh& mesh) {
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const Triangle& t : mesh.triangles)
+    for (const Index v : t) used[v] = true;
+  return used;
+}
+
+// The median of the sizes over the surface, each vertex weighing a third of its triangles' area.
+double area_median(const TriangleMesh& mesh, const std::vector<double>& h) {
+  std::vector<double> weight(mesh.vertices.size(), 0);
+  double total = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const double third = triangle_area(a, b, c) / 3;
+    for (const Index v : mesh.triangles[t]) weight[v] += third;
+    total += 3 * third;
+  }
+  std::vector<Index> order;
+  for (Index v = 0; v < h.size(); ++v)
+    if (weight[v] > 0) order.push_back(v);
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return h[a] < h[b]; });
+  double sum = 0;
+  for (const Index v : order)
+    if ((sum += weight[v]) >= total / 2) return h[v];
+  return order.empty() ? 1.0 : h[order.back()];
+}
+
+// The raw target lengths, per vertex of `mesh`, from the one source the settings give.
+std::vector<double> raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
+                              const RemeshSettings& settings) {
+  const SizingSettings& s = settings.sizing;
+  const int sources = (s.adaptive > 0) + !s.edge_lengths.empty() + (s.edge_length_at != nullptr);
+  if (sources != 1)
+    throw InvalidArgument("give one sizing: adaptive, per-vertex edge lengths, or a function");
+  if (s.adaptive > 0) {
+    if (!std::isfinite(s.adaptive)) throw InvalidArgument("the gradation must be finite");
+    if (!(s.adaptive_range >= 1)) throw InvalidArgument("the adaptive range must be at least 1");
+    std::vector<double> lfs = local_feature_size(mesh, {s.lfs_samples, settings.seed, s.adaptive});
+    const double median = area_median(mesh, lfs);
+    for (double& x : lfs)
+      if (x > 0) x = std::clamp(x, median / s.adaptive_range, median * s.adaptive_range);
+    return lfs;
+  }
+  std::vector<double> h(mesh.vertices.size(), 0);
+  if (!s.edge_lengths.empty()) {
+    if (s.edge_lengths.size() != new_id.size())
+      throw InvalidArgument("the sizing has " + std::to_string(s.edge_lengths.size()) +
+                            " edge lengths for " + std::to_string(new_id.size()) + " vertices");
+    for (std::size_t v = 0; v < new_id.size(); ++v) h[new_id[v]] = s.edge_lengths[v];
+  } else {
+    for (std::size_t v = 0; v < h.size(); ++v) h[v] = s.edge_length_at(mesh.vertices[v]);
+  }
+  const std::vector<bool> used = used_vertices(mesh);
+  for (std::size_t v = 0; v < new_id.size(); ++v) {
+    const double length = h[new_id[v]];
+    if (used[new_id[v]] && !(length > 0 && std::isfinite(length)))
+      throw InvalidArgument("the target edge length at vertex " + std::to_string(v) + " is " +
+                            std::to_string(length) + "; it must be positive and finite");
+  }
+  return h;
+}
+
+// The lengths h·k, clamped; vertices in no triangle get 1 (they carry no area).
+std::vector<double> scaled_sizes(const std::vector<double>& h, const std::vector<bool>& used,
+                                 double k, double min, double max) {
+  std::vector<double> out(h.size(), 1.0);
+  for (std::size_t v = 0; v < h.size(); ++v) {
+    if (!used[v]) continue;
+    double x = h[v] * k;
+    if (min > 0) x = std::max(x, min);
+    if (max > 0) x = std::min(x, max);
+    out[v] = x;
+  }
+  return out;
+}
+
+}  // namespace
+
+SizeField::SizeField(const TriangleMesh& mesh, std::vector<double> sizes)
+    : mesh_(&mesh), sizes_(std::move(sizes)) {}
+
+double SizeField::at(std::size_t t, const Vec3& p) const {
+  const auto c = mesh_->corners(t);
+  const Triangle& f = mesh_->triangles[t];
+  const Vec3 n = cross(c[1] - c[0], c[2] - c[0]);
+  const double area2 = dot(n, n);
+  if (area2 == 0) return (sizes_[f[0]] + sizes_[f[1]] + sizes_[f[2]]) / 3;
+  const double l0 = std::clamp(dot(n, cross(c[1] - p, c[2] - p)) / area2, 0.0, 1.0);
+  const double l1 = std::clamp(dot(n, cross(c[2] - p, c[0] - p)) / area2, 0.0, 1.0 - l0);
+  return l0 * sizes_[f[0]] + l1 * sizes_[f[1]] + (1 - l0 - l1) * sizes_[f[2]];
+}
+
+std::vector<double> SizeField::seed_weights() const {
+  std::vector<double> w(mesh_->triangles.size());
+  for (std::size_t t = 0; t < w.size(); ++t) {
+    const auto [a, b, c] = mesh_->corners(t);
+    double mean = 0;
+    for (const Index v : mesh_->triangles[t]) mean += seeds_per_area(sizes_[v]) / 3;
+    w[t] = triangle_area(a, b, c) * mean;
+  }
+  return w;
+}
+
+double SizeField::vertex_count() const {
+  double sum = 0;
+  for (const double w : seed_weights()) sum += w;
+  return sum;
+}
+
+std::vector<double> SizeField::density(double reference) const {
+  std::vector<double> rho(sizes_.size());
+  for (std::size_t v = 0; v < rho.size(); ++v) rho[v] = std::pow(reference / sizes_[v], 4);
+  return rho;
+}
+
+std::vector<double> SizeField::steps_along(const std::vector<Index>& polyline) const {
+  std::vector<double> steps{0.0};
+  for (std::size_t k = 1; k < polyline.size(); ++k) {
+    const Index a = polyline[k - 1], b = polyline[k];
+    // ∫ ds / h with h linear from h_a to h_b: the segment's length over the logarithmic mean.
+    const double ha = sizes_[a], hb = sizes_[b];
+    const double mean = std::abs(ha - hb) > 1e-9 * ha ? (ha - hb) / std::log(ha / hb) : ha;
+    steps.push_back(steps.back() + distance(mesh_->vertices[a], mesh_->vertices[b]) / mean);
+  }
+  return steps;
+}
+
+std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
+                                         const RemeshSettings& settings) {
+  const SizingSettings& s = settings.sizing;
+  if (!s.active()) return std::nullopt;
+  const double min = s.min_edge_length, max = s.max_edge_length;
+  if (!(min >= 0) || !(max >= 0) || !std::isfinite(min) || !std::isfinite(max))
+    throw InvalidArgument("the edge length clamps must be finite and not negative");
+  if (min > 0 && max > 0 && min > max)
+    throw InvalidArgument("the minimum edge length is above the maximum");
+  const std::vector<double> h = raw_sizes(mesh, new_id, settings);
+  const std::vector<bool> used = used_vertices(mesh);
+  // Initial seeds set the count as `vertices` does.
+  const std::size_t vertices =
+      settings.vertices > 0 ? settings.vertices : settings.initial_seeds.size();
+  if (vertices > 0) {
+    // One factor k for the count: without clamps the count goes as k⁻², with them it is
+    // monotone in k; bisected on log k (a count the clamps cannot reach gets the nearest).
+    const auto count = [&](double k) {
+      return SizeField(mesh, scaled_sizes(h, used, k, min, max)).vertex_count();
+    };
+    const auto n = static_cast<double>(vertices);
+    double k = std::sqrt(count(1.0) / n);
+    if (min > 0 || max > 0) {
+      double lo = std::log(k) - 20, hi = std::log(k) + 20;
+      for (int step = 0; step < 80; ++step) {
+        const double mid = (lo + hi) / 2;
+        (count(std::exp(mid)) > n ? lo : hi) = mid;
+      }
+      k = std::exp((lo + hi) / 2);
+    }
+    return SizeField(mesh, scaled_sizes(h, used, k, min, max));
+  }
+  const double length = settings.edge_length != 0 ? settings.edge_length
+                        : settings.edge_length_rel != 0
+                            ? settings.edge_length_rel * bounding_box(mesh).diagonal()
+                            : 0;
+  if (length == 0 && s.adaptive > 0)
+    throw InvalidArgument("adaptive sizing needs a vertex count or an edge length");
+  if (length != 0 && !(length > 0 && std::isfinite(length)))
+    throw InvalidArgument("the edge length must be positive");
+  const double k = length > 0 ? length / area_median(mesh, h) : 1.0;
+  return SizeField(mesh, scaled_sizes(h, used, k, min, max));
+}
+
+}  // namespace cvtmesh

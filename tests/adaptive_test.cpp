@@ -1,0 +1,228 @@
+// Adaptive remeshing (issue 20): the CVT density from target edge lengths (paper eq. 1, §4.1),
+// followed on the output; sizes from a file; the local feature size on a thin waist.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/io.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/repair.hpp"
+#include "cvtmesh/topology.hpp"
+#include "remesh/mend_topology.hpp"
+#include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// The median lengths of the edges whose middles have coordinate `axis` below -0.8, and above
+// 0.8.
+std::pair<double, double> end_lengths(const TriangleMesh& mesh, double Vec3::*axis) {
+  std::vector<double> low, high;
+  for (const Edge& e : sorted_edges(mesh)) {
+    const Vec3 &a = mesh.vertices[e[0]], &b = mesh.vertices[e[1]];
+    const double middle = (a.*axis + b.*axis) / 2;
+    if (middle < -0.8) low.push_back(distance(a, b));
+    if (middle > 0.8) high.push_back(distance(a, b));
+  }
+  return {median(low), median(high)};
+}
+
+// A closed surface of revolution about z: two bulbs of radius about 1 joined by a waist of
+// radius `waist`, whose medial axis comes within `waist` of it there.
+TriangleMesh dumbbell(double waist, int rings, int sectors) {
+  TriangleMesh m;
+  m.vertices.push_back({0, 0, -1.5});
+  for (int i = 1; i < rings; ++i) {
+    const double theta = std::numbers::pi * i / rings;
+    const double rho =
+        1 - (1 - waist) * std::exp(-std::pow((theta - std::numbers::pi / 2) / 0.25, 2));
+    for (int j = 0; j < sectors; ++j) {
+      const double phi = 2 * std::numbers::pi * j / sectors;
+      m.vertices.push_back({rho * std::sin(theta) * std::cos(phi),
+                            rho * std::sin(theta) * std::sin(phi), -1.5 * std::cos(theta)});
+    }
+  }
+  m.vertices.push_back({0, 0, 1.5});
+  const auto at = [&](int ring, int j) {  // ring 1..rings-1
+    return static_cast<Index>(1 + (ring - 1) * sectors + (j % sectors));
+  };
+  const auto top = static_cast<Index>(m.vertices.size() - 1);
+  for (int j = 0; j < sectors; ++j) {
+    m.triangles.push_back({0, at(1, j + 1), at(1, j)});
+    for (int i = 1; i + 1 < rings; ++i) {
+      m.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    }
+    m.triangles.push_back({at(rings - 1, j), at(rings - 1, j + 1), top});
+  }
+  return m;
+}
+
+TEST(Adaptive, OutputFollowsALinearSizingField) {
+  // h = 0.08 at the south pole to 0.24 at the north pole of the unit sphere, linear in z.
+  const TriangleMesh sphere = icosphere(5);
+  RemeshSettings s;
+  s.sizing.edge_length_at = [](const Vec3& p) { return 0.16 + 0.08 * p.z; };
+  s.hausdorff.reset();
+  const RemeshResult r = remesh(sphere, s);  // no output size: the lengths as they are
+  ASSERT_TRUE(analyze_topology(r.mesh).is_manifold());
+  std::vector<double> ratio;
+  for (const Edge& e : sorted_edges(r.mesh)) {
+    const Vec3 &a = r.mesh.vertices[e[0]], &b = r.mesh.vertices[e[1]];
+    ratio.push_back(distance(a, b) / (0.16 + 0.08 * (a.z + b.z) / 2));
+  }
+  EXPECT_NEAR(median(ratio), 1.0, 0.2);
+  const auto [south, north] = end_lengths(r.mesh, &Vec3::z);
+  // Beyond |z| = 0.8 (mean |z| 0.9), the ends' lengths differ by the field's ratio there,
+  // 0.232 / 0.088, within 20%.
+  const double expected_ratio = (0.16 + 0.08 * 0.9) / (0.16 - 0.08 * 0.9);
+  EXPECT_NEAR(north / south / expected_ratio, 1.0, 0.2);
+  // The report measures the same thing.
+  EXPECT_NEAR(r.edge_length_ratio.median, median(ratio), 0.1);
+  // The count is the field's: ∫ 1 / (√3/2 h²) over the sphere.
+  double expected = 0;
+  for (int k = 0; k < 2000; ++k) {  // dA = 2π dz on the unit sphere
+    const double z = -1 + (k + 0.5) / 1000, h = 0.16 + 0.08 * z;
+    expected += 2 * std::numbers::pi / 1000 / (std::sqrt(3.0) / 2 * h * h);
+  }
+  EXPECT_NEAR(static_cast<double>(r.mesh.vertices.size()) / expected, 1.0, 0.05);
+}
+
+TEST(Adaptive, AVertexCountScalesTheField) {
+  const TriangleMesh sphere = icosphere(4);
+  RemeshSettings s;
+  s.vertices = 600;
+  s.sizing.edge_lengths.assign(sphere.vertices.size(), 0);
+  for (Index v = 0; v < sphere.vertices.size(); ++v)
+    s.sizing.edge_lengths[v] = 1 + 0.5 * sphere.vertices[v].x;  // any units: only ratios count
+  s.topology_rounds = 0;
+  const RemeshResult r = remesh(sphere, s);
+  EXPECT_EQ(r.mesh.vertices.size(), 600u);
+  const auto [west, east] = end_lengths(r.mesh, &Vec3::x);
+  EXPECT_NEAR(east / west, 1.45 / 0.55, 0.6);
+}
+
+TEST(Adaptive, ClampsBoundTheLengths) {
+  const TriangleMesh sphere = icosphere(4);
+  RemeshSettings s;
+  s.sizing.edge_length_at = [](const Vec3& p) { return 0.16 + 0.08 * p.z; };
+  s.sizing.min_edge_length = 0.14;
+  s.sizing.max_edge_length = 0.18;
+  const auto [south, north] = end_lengths(remesh(sphere, s).mesh, &Vec3::z);
+  EXPECT_NEAR(north / south, 0.18 / 0.14, 0.25);
+}
+
+TEST(Adaptive, BadSizingsAreRefused) {
+  const TriangleMesh sphere = icosphere(2);
+  RemeshSettings s;
+  s.sizing.edge_lengths.assign(sphere.vertices.size() - 1, 0.1);
+  EXPECT_THROW(remesh(sphere, s), InvalidArgument);  // one length short
+  s.sizing.edge_lengths.assign(sphere.vertices.size(), 0.1);
+  s.sizing.edge_lengths[3] = -1;
+  EXPECT_THROW(remesh(sphere, s), InvalidArgument);  // a negative length
+  s.sizing.edge_lengths[3] = 0.1;
+  s.sizing.min_edge_length = 0.2;
+  s.sizing.max_edge_length = 0.1;
+  EXPECT_THROW(remesh(sphere, s), InvalidArgument);  // min above max
+  RemeshSettings a;
+  a.sizing.adaptive = 1.5;
+  EXPECT_THROW(remesh(sphere, a), InvalidArgument);  // adaptive needs an output size
+  a.sizing.edge_lengths.assign(sphere.vertices.size(), 0.1);
+  a.vertices = 100;
+  EXPECT_THROW(remesh(sphere, a), InvalidArgument);  // two sizings
+}
+
+TEST(Adaptive, ThinWaistKeepsTopologyWhereUniformDoesNot) {
+  // At 300 vertices the uniform spacing (about 0.4) is wider than the waist's circumference
+  // (0.38): without topology control, its cells wrap around the waist.
+  const TriangleMesh shape = dumbbell(0.06, 160, 96);
+  RemeshSettings s;
+  s.vertices = 300;
+  s.topology_rounds = 0;
+  const RemeshResult uniform = remesh(shape, s);
+  s.sizing.adaptive = 1.5;
+  const RemeshResult adaptive = remesh(shape, s);
+  const TopologyReport input = analyze_topology(shape);
+  EXPECT_FALSE(same_topology(analyze_topology(uniform.mesh), input));
+  EXPECT_TRUE(same_topology(analyze_topology(adaptive.mesh), input));
+  EXPECT_EQ(adaptive.triangles_removed, 0u);
+}
+
+TEST(Adaptive, HigherGradationSmoothsNeighbouringLengths) {
+  // The ratio of neighbouring edges' lengths, at the 95th percentile: near 1 for uniform
+  // sizes, larger where the sizes change fast; a higher gradation spreads the change.
+  const TriangleMesh shape = dumbbell(0.06, 160, 96);
+  auto spread = [&](double gradation) {
+    RemeshSettings s;
+    s.vertices = 1500;
+    s.sizing.adaptive = gradation;
+    const TriangleMesh out = remesh(shape, s).mesh;
+    std::vector<double> ratio;
+    for (const Triangle& t : out.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const double a = distance(out.vertices[t[k]], out.vertices[t[(k + 1) % 3]]);
+        const double b = distance(out.vertices[t[(k + 1) % 3]], out.vertices[t[(k + 2) % 3]]);
+        ratio.push_back(std::max(a, b) / std::min(a, b));
+      }
+    std::sort(ratio.begin(), ratio.end());
+    return ratio[ratio.size() * 95 / 100];
+  };
+  EXPECT_LT(spread(6), spread(0.5));
+}
+
+TEST(Adaptive, SizesFromAFile) {
+  const TempDir dir;
+  const TriangleMesh sphere = icosphere(2);
+  {
+    std::ofstream text(dir.path() / "sizes.txt");
+    text << "# one per vertex\n";
+    for (Index v = 0; v < sphere.vertices.size(); ++v) text << 0.1 + 0.01 * (v % 3) << "\n";
+  }
+  const std::vector<double> read = read_vertex_values(dir.path() / "sizes.txt");
+  ASSERT_EQ(read.size(), sphere.vertices.size());
+  EXPECT_DOUBLE_EQ(read[2], 0.12);
+  // A PLY as `cvtmesh lfs` writes it.
+  std::vector<double> values(sphere.vertices.size());
+  for (Index v = 0; v < values.size(); ++v) values[v] = 1 + v;
+  write_ply_with_vertex_scalar(dir.path() / "sizes.ply", sphere, values, "lfs");
+  const std::vector<double> back = read_vertex_values(dir.path() / "sizes.ply");
+  ASSERT_EQ(back.size(), values.size());
+  for (Index v = 0; v < values.size(); ++v) EXPECT_FLOAT_EQ(back[v], values[v]);
+  // A mesh's PLY has no scalar besides its positions.
+  write_mesh(dir.path() / "plain.ply", sphere);
+  EXPECT_THROW(read_vertex_values(dir.path() / "plain.ply"), InputError);
+  {
+    std::ofstream bad(dir.path() / "bad.txt");
+    bad << "0.1\n0.2 0.3\n";
+  }
+  try {
+    read_vertex_values(dir.path() / "bad.txt");
+    FAIL() << "two numbers on a line were read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.txt"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Adaptive, ValuesFollowTheRepair) {
+  // Vertex 3 duplicates vertex 0; merged, the smaller value stays.
+  const std::vector<Index> new_id = {0, 1, 2, 0, kRemovedVertex};
+  const std::vector<double> out = values_after_repair({0.5, 1, 2, 0.25, 9}, new_id, 3);
+  EXPECT_EQ(out, (std::vector<double>{0.25, 1, 2}));
+  EXPECT_THROW(values_after_repair({1, 2}, new_id, 3), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace cvtmesh
