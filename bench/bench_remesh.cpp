@@ -13,6 +13,9 @@
 //     extraction's time (triangulation, polishing) over CCVT's, and the output's quality.
 //   BM_LloydVsLbfgs: RCVT of bunny to 2k vertices; L-BFGS for 20 iterations, then Lloyd until
 //     it reaches the same energy: RVD evaluations and seconds of each.
+//   BM_AdaptiveVsUniform/<mesh>: the default remesh to 2k vertices, uniform and --adaptive 1.5
+//     (issue 20), one after the other: time_ratio = adaptive / uniform (local feature size
+//     included), and each one's θmin, Qmin and seeds added by topology control.
 // Meshes: ../shared/data/{bunny.off, igea.ply}; cases skip when they are absent.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -108,6 +111,35 @@ void BM_Remesh(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Remesh)->DenseRange(0, 1)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_AdaptiveVsUniform(benchmark::State& state) {
+  const TriangleMesh* input = load(state, kMeshes[state.range(0)]);
+  if (!input) return;
+  for (auto _ : state) {
+    double time[2];
+    for (const int adaptive : {0, 1}) {
+      RemeshSettings s;
+      s.vertices = 2000;
+      s.sizing.adaptive = adaptive ? 1.5 : 0;
+      const auto start = Clock::now();
+      const RemeshResult r = remesh(*input, s);
+      time[adaptive] = seconds(start);
+      const QualityReport q = measure_quality(r.mesh);
+      const std::string name = adaptive ? "adaptive_" : "uniform_";
+      state.counters[name + "theta_min"] = q.angle_min_deg;
+      state.counters[name + "q_min"] = q.q_min;
+      state.counters[name + "seeds_added"] =
+          static_cast<double>(r.islands_seeded + r.seeds_refined + r.links_mended);
+    }
+    state.SetIterationTime(time[0] + time[1]);
+    state.counters["time_ratio"] = time[1] / time[0];
+  }
+}
+BENCHMARK(BM_AdaptiveVsUniform)
+    ->DenseRange(0, 1)
+    ->UseManualTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 void BM_CgalIsotropic(benchmark::State& state) {
   const TriangleMesh* input = load(state, kMeshes[state.range(0)]);
