@@ -196,7 +196,8 @@ void add_remesh_command(CLI::App& app, Action& run) {
     if (vertices->count() + length->count() + relative->count() + seeds->count() +
             sizing->count() ==
         0)
-      throw CLI::RequiredError("--vertices, --edge-length, --edge-length-rel or --seeds-file");
+      throw CLI::RequiredError(
+          "--vertices, --edge-length, --edge-length-rel, --seeds-file or --sizing");
     o->feature_angle_given = angle->count() > 0;
     run = [o] { return run_remesh(*o); };
   });

@@ -33,6 +33,8 @@ BoundingBox bounding_box(const TriangleMesh& mesh);
 
 double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c);
 double surface_area(const TriangleMesh& mesh);
+// Per vertex, whether a triangle uses it.
+std::vector<bool> used_vertices(const TriangleMesh& mesh);
 
 // The same surface with its vertices in Morton order, and its triangles in the Morton order of
 // their centroids, each turned (orientation kept) to start at its smallest vertex id. The RVD's

@@ -23,11 +23,11 @@ double interpolated(const std::vector<double>& xs, const std::vector<double>& ys
 }  // namespace
 
 CurveSpacing::CurveSpacing(const CurveProjector& curves, const Features& features,
-                           const SizeField& sizes) {
+                           const SizeField& sizes)
+    : curves_(&curves) {
   for (std::size_t c = 0; c < curves.size(); ++c) {
     std::vector<Index> polyline = features.curves[c].vertices;
     if (curves.closed(c)) polyline.push_back(polyline.front());
-    arclength_.push_back(curves.arclengths(c));
     steps_.push_back(sizes.steps_along(polyline));
   }
 }
@@ -35,16 +35,18 @@ CurveSpacing::CurveSpacing(const CurveProjector& curves, const Features& feature
 double CurveSpacing::at(std::size_t c, double s) const {
   if (spacing_ > 0) return s / spacing_;
   // A closed curve's arc lengths past its end wrap around (once, for a link's end).
-  const double whole = length(c);
+  const double whole = curves_->length(c);
   const double laps = s > whole && whole > 0 ? std::floor(s / whole) : 0;
-  return laps * steps_[c].back() + interpolated(arclength_[c], steps_[c], s - laps * whole);
+  return laps * steps_[c].back() +
+         interpolated(curves_->arclengths(c), steps_[c], s - laps * whole);
 }
 
 double CurveSpacing::arclength(std::size_t c, double u) const {
   if (spacing_ > 0) return u * spacing_;
   const double whole = steps_[c].back();
   const double laps = u > whole && whole > 0 ? std::floor(u / whole) : 0;
-  return laps * length(c) + interpolated(steps_[c], arclength_[c], u - laps * whole);
+  return laps * curves_->length(c) +
+         interpolated(steps_[c], curves_->arclengths(c), u - laps * whole);
 }
 
 }  // namespace cvtmesh

@@ -24,12 +24,11 @@ class CurveSpacing {
   double arclength(std::size_t c, double u) const;
 
  private:
-  double length(std::size_t c) const { return arclength_[c].back(); }  // with a size field
-  double at(std::size_t c, double s) const;                            // steps(c, 0, s)
+  double at(std::size_t c, double s) const;  // steps(c, 0, s)
 
-  double spacing_ = 0;                          // uniform when > 0
-  std::vector<std::vector<double>> arclength_;  // per curve, per polyline point
-  std::vector<std::vector<double>> steps_;      // the same points' steps from the start
+  double spacing_ = 0;                      // uniform when > 0
+  const CurveProjector* curves_ = nullptr;  // with a size field: its polylines' arc lengths
+  std::vector<std::vector<double>> steps_;  // and, per curve, per polyline point, its steps
 };
 
 }  // namespace cvtmesh

@@ -7,14 +7,21 @@
 
 namespace cvtmesh {
 
-AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed) : mesh_(mesh), seed_(seed) {
-  cumulative_.reserve(mesh.triangles.size());
-  double sum = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+namespace {
+
+std::vector<double> triangle_areas(const TriangleMesh& mesh) {
+  std::vector<double> areas(mesh.triangles.size());
+  for (std::size_t t = 0; t < areas.size(); ++t) {
     const auto [a, b, c] = mesh.corners(t);
-    cumulative_.push_back(sum += triangle_area(a, b, c));
+    areas[t] = triangle_area(a, b, c);
   }
+  return areas;
 }
+
+}  // namespace
+
+AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed)
+    : AreaSampler(mesh, seed, triangle_areas(mesh)) {}
 
 AreaSampler::AreaSampler(const TriangleMesh& mesh, std::uint64_t seed,
                          const std::vector<double>& weights)

@@ -23,6 +23,13 @@ double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 0.5 * norm(cross(b - a, c - a));
 }
 
+std::vector<bool> used_vertices(const TriangleMesh& mesh) {
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const Triangle& t : mesh.triangles)
+    for (const Index v : t) used[v] = true;
+  return used;
+}
+
 double surface_area(const TriangleMesh& mesh) {
   double area = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {

@@ -106,9 +106,7 @@ std::size_t remove_degenerate_triangles(TriangleMesh& mesh) {
 }
 
 std::size_t remove_unreferenced_vertices(TriangleMesh& mesh, std::vector<Index>& new_id) {
-  std::vector<bool> used(mesh.vertices.size(), false);
-  for (const Triangle& t : mesh.triangles)
-    for (Index v : t) used[v] = true;
+  const std::vector<bool> used = used_vertices(mesh);
   const std::size_t unused = std::count(used.begin(), used.end(), false);
   if (unused > 0) compose(new_id, compact_vertices(mesh, used));
   return unused;

@@ -303,16 +303,17 @@ RemeshSettings scaled_settings(RemeshSettings s, int exponent) {
 
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s) {
   const int exponent = size_exponent(mesh);
-  const TriangleMesh unit = scaled_by_power_of_two(mesh, -exponent);
-  const RemeshSettings unit_settings = scaled_settings(s, -exponent);
-  check_output_size(unit_settings);
+  if (exponent != 0)
+    return requested_vertex_count(scaled_by_power_of_two(mesh, -exponent),
+                                  scaled_settings(s, -exponent));
+  check_output_size(s);
   std::optional<SizeField> field;
   if (s.sizing.active() && s.vertices == 0) {
     std::vector<Index> same(mesh.vertices.size());
     std::iota(same.begin(), same.end(), Index{0});
-    field = make_size_field(unit, same, unit_settings);
+    field = make_size_field(mesh, same, s);
   }
-  return unit_vertex_count(unit, unit_settings, field ? &*field : nullptr);
+  return unit_vertex_count(mesh, s, field ? &*field : nullptr);
 }
 
 RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {

@@ -66,9 +66,7 @@ std::vector<double> local_feature_size(const TriangleMesh& given, const LfsSetti
   }
   if (settings.gradation > 0) lfs = graded(mesh, std::move(lfs), settings.gradation);
 
-  std::vector<bool> used(mesh.vertices.size(), false);
-  for (const Triangle& t : mesh.triangles)
-    for (const Index v : t) used[v] = true;
+  const std::vector<bool> used = used_vertices(mesh);
   for (std::size_t v = 0; v < lfs.size(); ++v) lfs[v] = used[v] ? std::ldexp(lfs[v], exponent) : 0;
   return lfs;
 }

@@ -58,7 +58,7 @@ std::vector<Vec3> sample_poles(const std::vector<SurfaceSample>& samples) {
     points.emplace_back(Kernel::Point_3(p.x, p.y, p.z), i);
   }
   Delaunay delaunay(points.begin(), points.end());  // spatially sorted inside
-  if (delaunay.dimension() < 3) return {};  // coplanar samples: no Voronoi vertex at all
+  if (delaunay.dimension() < 3) return {};          // coplanar samples: no Voronoi vertex at all
   std::vector<Vec3> centres;
   for (auto c = delaunay.finite_cells_begin(); c != delaunay.finite_cells_end(); ++c) {
     c->info() = centres.size();

@@ -15,13 +15,6 @@ double seeds_per_area(double h) {
   return 1 / (std::sqrt(3.0) / 2 * h * h);
 }
 
-std::vector<bool> used_vertices(const TriangleMesh& mesh) {
-  std::vector<bool> used(mesh.vertices.size(), false);
-  for (const Triangle& t : mesh.triangles)
-    for (const Index v : t) used[v] = true;
-  return used;
-}
-
 // The median of the sizes over the surface, each vertex weighing a third of its triangles' area.
 double area_median(const TriangleMesh& mesh, const std::vector<double>& h) {
   std::vector<double> weight(mesh.vertices.size(), 0);
