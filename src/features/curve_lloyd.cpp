@@ -33,10 +33,10 @@ void relax_curve_seeds(std::vector<Vec3>& seeds, const SeedConstraints& c,
     const auto& seeds_on = along[k];
     // A loop of fewer than three has no spacing to even (and place_feature_seeds gives it three).
     if (seeds_on.empty() || (curves.closed(k) && seeds_on.size() < 3)) continue;
-    // Lloyd in target lengths (steps along the curve): even there, the seeds follow the sizes.
+    // Lloyd in measured length: even there, the seeds follow the sizes.
     std::vector<double> t;
-    for (const auto& [arclength, s] : seeds_on) t.push_back(spacing.steps(k, 0, arclength));
-    const double whole = spacing.steps(k, 0, curves.length(k));
+    for (const auto& [arclength, s] : seeds_on) t.push_back(spacing.length(k, 0, arclength));
+    const double whole = spacing.length(k, 0, curves.length(k));
     for (int step = 0; step < steps; ++step) t = lloyd_step(t, whole, curves.closed(k));
     for (std::size_t i = 0; i < t.size(); ++i) {
       Vec3& seed = seeds[seeds_on[i].second];

@@ -10,8 +10,8 @@
 
 namespace cvtmesh {
 
-// `steps` Jacobi steps of one-dimensional Lloyd along each curve, measured in target lengths
-// (`spacing`; uniform: arc length): each curve seed moves to the middle of its 1D Voronoi cell,
+// `steps` Jacobi steps of one-dimensional Lloyd along each curve, by length as `spacing`
+// measures it (uniform: arc length): each curve seed moves to the middle of its 1D Voronoi cell,
 // whose ends are halfway to its neighbours along the curve (the corners at an open curve's ends
 // stay put). Each step keeps the seeds' order and averages each arc length with its neighbours'
 // (weights 1/4, 1/2, 1/4): a diffusion, so k steps smooth the spacing over about √(k/2) seeds

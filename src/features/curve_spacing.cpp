@@ -22,31 +22,33 @@ double interpolated(const std::vector<double>& xs, const std::vector<double>& ys
 
 }  // namespace
 
-CurveSpacing::CurveSpacing(const CurveProjector& curves, const Features& features,
+CurveSpacing::CurveSpacing(double spacing, const CurveProjector& curves, const Features& features,
                            const SizeField& sizes)
-    : curves_(&curves) {
+    : spacing_(spacing), curves_(&curves) {
   for (std::size_t c = 0; c < curves.size(); ++c) {
     std::vector<Index> polyline = features.curves[c].vertices;
     if (curves.closed(c)) polyline.push_back(polyline.front());
-    steps_.push_back(sizes.steps_along(polyline));
+    std::vector<double> steps = sizes.steps_along(polyline);
+    for (double& u : steps) u *= spacing;
+    measured_.push_back(std::move(steps));
   }
 }
 
 double CurveSpacing::at(std::size_t c, double s) const {
-  if (spacing_ > 0) return s / spacing_;
+  if (!curves_) return s;
   // A closed curve's arc lengths past its end wrap around (once, for a link's end).
   const double whole = curves_->length(c);
   const double laps = s > whole && whole > 0 ? std::floor(s / whole) : 0;
-  return laps * steps_[c].back() +
-         interpolated(curves_->arclengths(c), steps_[c], s - laps * whole);
+  return laps * measured_[c].back() +
+         interpolated(curves_->arclengths(c), measured_[c], s - laps * whole);
 }
 
 double CurveSpacing::arclength(std::size_t c, double u) const {
-  if (spacing_ > 0) return u * spacing_;
-  const double whole = steps_[c].back();
+  if (!curves_) return u;
+  const double whole = measured_[c].back();
   const double laps = u > whole && whole > 0 ? std::floor(u / whole) : 0;
   return laps * curves_->length(c) +
-         interpolated(steps_[c], curves_->arclengths(c), u - laps * whole);
+         interpolated(measured_[c], curves_->arclengths(c), u - laps * whole);
 }
 
 }  // namespace cvtmesh

@@ -15,13 +15,14 @@ namespace {
 
 constexpr Index kNoSeed = std::numeric_limits<Index>::max();
 
-// The shortest missing link, in target lengths, that a new seed splits (see mend_missing_links).
+// The shortest missing link, in spacings, that a new seed splits (see mend_missing_links).
 constexpr double kShortestSplitLink = 0.9;
 
 // How many seeds go inside curve c (its corners not counted).
 std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
                          const CurveSpacing& spacing) {
-  const auto n = static_cast<std::size_t>(std::llround(spacing.steps(c, 0, curves.length(c))));
+  const auto n = static_cast<std::size_t>(
+      std::llround(spacing.length(c, 0, curves.length(c)) / spacing.spacing()));
   if (curves.closed(c)) return std::max<std::size_t>(n, 3);
   const auto& v = f.curves[c].vertices;
   if (v.front() == v.back()) return std::max<std::size_t>(n, 3) - 1;  // a loop through a corner
@@ -72,9 +73,9 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
     wanted.push_back({mesh.vertices[v], SeedConstraints::Kind::corner, 0});
   for (std::size_t c = 0; c < curves.size(); ++c) {
     const std::size_t n = seeds_inside(curves, features, c, spacing);
-    // Evenly spaced in target lengths; a loop's seeds start half a step from its first vertex.
+    // Evenly spaced by measured length; a loop's seeds start half a step from its first vertex.
     const double step =
-        spacing.steps(c, 0, curves.length(c)) / static_cast<double>(curves.closed(c) ? n : n + 1);
+        spacing.length(c, 0, curves.length(c)) / static_cast<double>(curves.closed(c) ? n : n + 1);
     for (std::size_t k = 0; k < n; ++k) {
       const double u = curves.closed(c) ? (static_cast<double>(k) + 0.5) * step
                                         : static_cast<double>(k + 1) * step;
@@ -132,11 +133,11 @@ std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
   std::vector<std::uint32_t> joins(seeds.size(), kNone);  // per stray seed: the curve it joins
   std::vector<double> d2(seeds.size(), std::numeric_limits<double>::infinity());
   for (std::size_t k = 0; k < curves.size(); ++k) {
-    const double steps = spacing.steps(k, 0, curves.length(k));
-    const auto n = static_cast<std::size_t>(std::ceil(8 * steps)) + 1;
+    const double length = spacing.length(k, 0, curves.length(k));
+    const auto n = static_cast<std::size_t>(std::ceil(8 * length / spacing.spacing())) + 1;
     for (std::size_t i = 0; i <= n; ++i) {
       const Vec3 p = curves.at(
-          k, spacing.arclength(k, steps * static_cast<double>(i) / static_cast<double>(n)));
+          k, spacing.arclength(k, length * static_cast<double>(i) / static_cast<double>(n)));
       const Index s = tree(p);
       const double d = dot(seeds[s] - p, seeds[s] - p);
       if (c.kind[s] == SeedConstraints::Kind::surface && d < d2[s])
@@ -206,11 +207,11 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
   std::vector<Vec3> added;  // the new seeds, not in the tree
   std::size_t mended = 0;
   for (const FeatureLink& link : missing) {
-    // The stretch's stray owners, by samples an eighth of a target length apart: surface seeds
+    // The stretch's stray owners, by samples an eighth of a spacing apart: surface seeds
     // nearest to one of its points. The one nearest to the stretch's middle joins the curve there.
     const Vec3 middle = curves.at(link.curve, (link.from + link.to) / 2);
-    const double steps = spacing.steps(link.curve, link.from, link.to);
-    const auto n = static_cast<std::size_t>(std::ceil(8 * steps)) + 1;
+    const double length = spacing.length(link.curve, link.from, link.to);
+    const auto n = static_cast<std::size_t>(std::ceil(8 * length / spacing.spacing())) + 1;
     Index stray = kNoSeed;
     double stray_d2 = std::numeric_limits<double>::infinity();
     for (std::size_t i = 1; i < n; ++i) {
@@ -227,7 +228,8 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
     // spacings long; elsewhere the seeds it would crowd there could squeeze corner cells
     // out of the output (and topology control keeps its best round should one still do).
     const bool add = stray == kNoSeed;
-    if (add && (steps < kShortestSplitLink || !halves_witnessed(before, tree, added, link, curves)))
+    if (add && (length < kShortestSplitLink * spacing.spacing() ||
+                !halves_witnessed(before, tree, added, link, curves)))
       continue;
     if (!occupied.insert(middle).second) continue;  // seeds stay distinct
     if (add) {

@@ -28,17 +28,17 @@ struct SeedConstraints {
   }
 };
 
-// Replaces seeds by feature seeds: each corner, and points about a target length apart along
-// each curve (at least three on a closed loop, two on a curve from a corner back to itself, so
-// no loop collapses), each taking the place of the nearest seed not taken yet. The seed count stays
-// the same. InvalidArgument when the features need more seeds than there are.
+// Replaces seeds by feature seeds: each corner, and points about a spacing apart (as `spacing`
+// measures length) along each curve (at least three on a closed loop, two on a curve from a corner
+// back to itself, so no loop collapses), each taking the place of the nearest seed not taken yet.
+// The seed count stays the same. InvalidArgument when the features need more seeds than there are.
 SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh& mesh,
                                     const Features& features, const CurveProjector& curves,
                                     const CurveSpacing& spacing);
 
 // CVT is indifferent to which seeds cover a curve: a surface seed may end up nearest to a
 // stretch of one, where the output would then cut the crease. Each such seed (nearest to a
-// sample of a curve, samples an eighth of a target length apart) joins that curve. Returns how
+// sample of a curve, samples an eighth of a spacing apart) joins that curve. Returns how
 // many did.
 std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
                              const CurveProjector& curves, const CurveSpacing& spacing);
@@ -62,7 +62,7 @@ std::vector<FeatureLink> feature_links(const std::vector<Vec3>& seeds, const See
 // there. For each such link whose stretch a surface seed owns in part, that seed (the one
 // nearest to the stretch's middle, if several) joins the curve at the middle. A link cut only by
 // feature seeds of other curves (in a narrow wedge between two curves, or a saw of corners)
-// gets a new curve seed at its middle instead, if it is at least 0.9 target lengths long and
+// gets a new curve seed at its middle instead, if it is at least 0.9 spacings long and
 // each half's middle is then nearer to the half's ends than to any other seed (so the restricted
 // Delaunay triangulation has both halves); other links stay as they are. Returns how many seeds
 // joined or came in.

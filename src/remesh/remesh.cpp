@@ -179,7 +179,8 @@ RemeshResult remesh_unit(const TriangleMesh& input, const RemeshSettings& settin
     result.features = detect_features(input, feature_settings);
     features = renumbered(result.features, sorted.new_id);
     curves.emplace(mesh, features);
-    curve_spacing.emplace(sizes ? CurveSpacing(*curves, features, *sizes) : CurveSpacing(spacing));
+    curve_spacing.emplace(sizes ? CurveSpacing(spacing, *curves, features, *sizes)
+                                : CurveSpacing(spacing));
     result.input_topology = analyze_topology(mesh);  // what topology control compares with
   });
   SeedConstraints constraints;
