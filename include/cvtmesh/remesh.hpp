@@ -56,7 +56,9 @@ struct RemeshSettings {
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
   // The best output of all the rounds is kept; they stop early after 4 rounds in a row that
-  // found nothing better. 0 turns the rounds off.
+  // found nothing better. Where they end without the input's topology, up to twice as many
+  // follow from the best round, refining every restricted cell that is not a disc, with the
+  // seeds they add pinned (not polished). 0 turns the rounds off.
   int topology_rounds = 12;
   // Sharp features and boundaries kept by CCVT (paper §4.3): corners become fixed output
   // vertices, feature curves chains of output edges. Not applied with mode rcvt.
@@ -94,12 +96,12 @@ struct RemeshResult {
   Features features;                      // of the input
   std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
   std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks
-  // Topology control (paper §4.4), at most `topology_rounds` rounds, each triangulating and
+  // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had
-  // cut it; and seeds added in the extra pieces of restricted cells split in several (where the
-  // output was not homeomorphic to the input). Counted up to the round whose output is kept:
-  // the best of all, by topology first (the input's, then fewest non-manifold edges and
-  // vertices), then corners kept, then links missing, then Qmin.
+  // cut it; and seeds added in the extra pieces of restricted cells split in several, or in
+  // pieces that are not discs (where the output was not homeomorphic to the input). Counted up
+  // to the round whose output is kept: the best of all, by topology first (the input's, then
+  // fewest non-manifold edges and vertices), then corners kept, then links missing, then Qmin.
   std::size_t links_mended = 0;
   std::size_t islands_seeded = 0;
   // Seeds added where the triangulation failed the topological ball property (a non-manifold

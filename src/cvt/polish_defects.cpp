@@ -228,8 +228,9 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     // The defects' seeds and their neighbours move, except feature seeds: moving them along
     // their curves would undo the snapping (§4.3) that made the curves' chains of output edges.
     std::vector<Index> movable = grown(defective, rdt_of_seeds);
-    std::erase_if(movable,
-                  [&](Index s) { return objective.kind(s) != SeedConstraints::Kind::surface; });
+    std::erase_if(movable, [&](Index s) {
+      return objective.kind(s) != SeedConstraints::Kind::surface || s >= settings.pinned_from;
+    });
     // Done, also when the last round already moved all these seeds: Lloyd converged there to
     // a shape it cannot improve.
     // Out of time (issue 22), the output is as good as it gets.

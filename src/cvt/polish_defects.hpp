@@ -14,6 +14,9 @@ namespace cvtmesh {
 struct PolishSettings {
   int rounds = 3;  // rounds of (find defects, Lloyd steps around them); 0: no polishing
   int steps = 10;  // Lloyd steps per round, at most (fewer once the defects are gone)
+  // Seeds from this id on do not move: refinement points that topology control puts at details
+  // finer than the spacing, which Lloyd steps would pull back out of them.
+  std::size_t pinned_from = static_cast<std::size_t>(-1);
 };
 
 struct PolishedOutput {

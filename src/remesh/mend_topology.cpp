@@ -23,7 +23,14 @@ constexpr double kWellShapedFlipDeg = 30;
 constexpr double kSmallestFlipDeg = 15;
 
 // Rounds in a row whose output is no better than the best so far, after which the rounds stop.
+// Where a handle or a gap is far finer than the spacing, Delaunay refinement needs a round per
+// halving of its balls, and the defects come and go meanwhile; polishing then pulls the points
+// it adds back out of the detail (femur.off at 1k, handles 0.0003 across, spacing 0.026: never
+// resolved with polishing, genus kept in 19 rounds without). So the rounds that follow a run
+// without the input's topology pin the seeds they add, and get a longer limit (femur.off went
+// 10 rounds without a better output before its handles were resolved).
 constexpr int kRoundsWithoutProgress = 4;
+constexpr int kPinnedRoundsWithoutProgress = 12;
 // Nor do they go on, without progress, once the seeds have grown this many times the best round's:
 // where the defects' seeds make as many new defects, the count doubles each round (a fuzzed
 // 11-triangle soup went from 40 seeds to 1,057 in 5 rounds, none of them better than the first).
@@ -221,6 +228,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   const SpecialEdges special = special_edges(m);
   std::optional<Round> best;
   int since_best = 0;  // rounds since the best was found
+  // Where the rounds end without the input's topology, they start again from the best round, for
+  // twice as many rounds, with the seeds they add pinned (see kRoundsWithoutProgress).
+  PolishSettings polish = m.polish;
+  bool pinned = false;
+  int last_round = rounds;
   for (int round = 0;; ++round) {
     Assessment a = assess(m, special, output.mesh, seeds, constraints);
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
@@ -241,7 +253,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     const bool out_of_time = m.placement.interrupt().out_of_time();
     const bool runaway =
         since_best > 0 && seeds.size() >= kGrowthWithoutProgress * best->seeds.size();
-    if (round < rounds && since_best < kRoundsWithoutProgress && !runaway) {
+    const int patience = pinned ? kPinnedRoundsWithoutProgress : kRoundsWithoutProgress;
+    if (round < last_round && since_best < patience && !runaway) {
       // Where the output shows a defect, from the seeds as extracted (one RVD for both): a seed in
       // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
       // its dual Voronoi edge crosses the surface (Delaunay refinement).
@@ -253,7 +266,14 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
           for (Index& v : t) v = vertex_seed[v];
           dual.push_back(t);
         }
-        found = defect_seeds(m.surface, seeds, dual);
+        // Cells that are no discs: in the first rounds only as a last resort, for an output
+        // whose topology differs without a defect to show where; in the pinned rounds, which
+        // refine until the topology is the input's, always. A cell that is a band around a limb
+        // thinner than the spacing is no disc either, yet the triangulation around it is often
+        // right: seeds in every such band from the first round doubled the seeds added on
+        // camel.off at 1k, and cost its θmin (23° to 0°).
+        found = defect_seeds(m.surface, seeds, dual,
+                             m.surface_topology.is_manifold() && (pinned || defects.empty()));
       }
       if (!a.missing.empty() && !out_of_time) {
         const std::size_t mended =
@@ -267,9 +287,22 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       report.refined += refined;
       changed += islands + refined;
     }
-    if (changed == 0) break;
+    if (changed == 0) {
+      if (pinned || rounds == 0 || best->assessment.topology_kept ||
+          !m.surface_topology.is_manifold())
+        break;
+      pinned = true;
+      last_round = round + 1 + 2 * rounds;
+      since_best = 0;
+      output = best->output;
+      seeds = best->seeds;
+      constraints = best->constraints;
+      report = best->report;
+      polish.pinned_from = seeds.size();
+      continue;
+    }
     ++report.rounds;
-    output = extract_polished(m.surface, seeds, m.placement, m.polish);
+    output = extract_polished(m.surface, seeds, m.placement, polish);
     report.polish_rounds += output.rounds;
   }
   output = std::move(best->output);

@@ -26,7 +26,7 @@ struct MendContext {
 
 struct MendReport {
   std::size_t links_mended = 0;   // seeds that joined a curve, or came in on one
-  std::size_t islands = 0;        // seeds added in the extra pieces of cells
+  std::size_t islands = 0;        // seeds added in extra pieces of cells, and pieces not discs
   std::size_t refined = 0;        // seeds added where defects' Voronoi edges cross the surface
   std::size_t links_flipped = 0;  // links still missing after the rounds, made by an edge flip
   std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_tips)
@@ -44,7 +44,9 @@ struct MendReport {
 // boundary tip given theirs (close_corner_tips). Returns the best of these outputs, by the
 // input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
 // links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
-// that round.
+// that round. Where the rounds end without the input's topology, up to 2 × `rounds` more start
+// from the best round: they also refine every cell piece that is not a disc, and polishing no
+// longer moves the seeds they add.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,

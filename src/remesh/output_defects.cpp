@@ -6,6 +6,7 @@
 #include "cvtmesh/rvd.hpp"
 #include "geometry/manifold_defects.hpp"
 #include "voronoi/dual_triangle.hpp"
+#include "voronoi/piece_euler.hpp"
 
 namespace cvtmesh {
 
@@ -64,14 +65,22 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 }
 
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
-                         const std::vector<Triangle>& triangles) {
+                         const std::vector<Triangle>& triangles, bool check_discs) {
   const RestrictedVoronoiDiagram rvd(surface, seeds);
   CellPieceCollector pieces(surface);
   CrossingCollector collector(seeds, triangles);
-  PolygonSink* sinks[] = {&pieces, &collector};
+  PieceEulerCollector euler(surface, seeds);
+  std::vector<PolygonSink*> sinks{&pieces, &collector};
+  if (check_discs) sinks.push_back(&euler);
   rvd.traverse(sinks);
   DefectSeeds out;
   for (const CellIsland& island : cell_islands(pieces)) out.islands.push_back(island.centroid);
+  if (check_discs) {
+    const std::vector<PieceShape> shapes = euler.shapes(pieces);
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+      if (shapes[i].euler != 1 && pieces.pieces()[i].area > 0)
+        out.islands.push_back(shapes[i].farthest);
+  }
   std::vector<Vec3>& kept = out.refinement;
   std::vector<double> radius;
   for (const auto& c : collector.result()) {

@@ -32,7 +32,10 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 
 // Where topology control adds seeds, from one traversal of the seeds' RVD:
 struct DefectSeeds {
-  // the centroid of each piece of a cell but its largest (cell_islands)
+  // the centroid of each piece of a cell but its largest (cell_islands), and the farthest vertex
+  // from its seed of each piece that is not a disc (an annulus around a handle or a hole narrower
+  // than the spacing, a whole closed component in one cell: PieceEulerCollector), which the new
+  // seed splits
   std::vector<Vec3> islands;
   // refinement points for the defective triangles (Boissonnat-Oudot / Cheng-Dey-Ramos Delaunay
   // refinement, the terminating step the paper's §4.4 points to): the points where each
@@ -42,8 +45,10 @@ struct DefectSeeds {
   // dropped.
   std::vector<Vec3> refinement;
 };
-// In traversal order: independent of the thread count. `triangles` are in seed ids.
+// In traversal order: independent of the thread count. `triangles` are in seed ids. Pieces are
+// checked for being discs only with `check_discs` (for a manifold surface: around a non-manifold
+// input edge or vertex a piece is no surface, and its count says nothing).
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
-                         const std::vector<Triangle>& triangles);
+                         const std::vector<Triangle>& triangles, bool check_discs);
 
 }  // namespace cvtmesh

@@ -1,0 +1,55 @@
+// The Euler characteristic of each piece of the restricted Voronoi cells (paper §2, Theorem 1:
+// the restricted Delaunay triangulation is homeomorphic to the surface when every cell is a
+// disc). A cell in one piece can still fail: around a handle or a hole narrower than the spacing
+// it is an annulus (χ 0), and the triangulation closes the handle without showing a defect. The
+// count is combinatorial, on the vertices' symbols, so it is exact: a piece's polygons are glued
+// along the stretches of input edges they share and at the input corners and edge crossings
+// they share.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "voronoi/cell_pieces.hpp"
+
+namespace cvtmesh {
+
+struct PieceShape {
+  int euler;      // V - E + F of the piece: 1 for a disc
+  Vec3 farthest;  // its vertex farthest from its seed
+};
+
+class PieceEulerCollector : public PolygonSink {
+ public:
+  PieceEulerCollector(const TriangleMesh& surface, const std::vector<Vec3>& seeds)
+      : surface_(surface), seeds_(seeds) {}
+  void begin(std::size_t chunks) override;
+  void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
+
+  // After the traversal, for each piece of `pieces` (collected in the same traversal), in its
+  // order. Independent of the thread count.
+  std::vector<PieceShape> shapes(const CellPieceCollector& pieces) const;
+
+ private:
+  // What one polygon adds on its own: its face, its vertices between two bisectors, its sides
+  // along a bisector, none of which another polygon of the cell has.
+  struct Own {
+    Index seed, triangle;
+    int euler;
+    Vec3 farthest;
+    double distance;
+  };
+  // What it shares with other polygons of the cell: an input corner (+1), a crossing of an input
+  // edge and a bisector (+1), a stretch of an input edge (-1). Counted once per piece.
+  struct Shared {
+    Index seed, triangle;
+    std::array<std::int64_t, 3> key;  // kind, then input vertex or edge ids and a seed
+  };
+  const TriangleMesh& surface_;
+  const std::vector<Vec3>& seeds_;
+  std::vector<std::vector<Own>> own_;
+  std::vector<std::vector<Shared>> shared_;
+};
+
+}  // namespace cvtmesh
