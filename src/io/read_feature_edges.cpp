@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cvtmesh/features.hpp"
+#include "io/data_lines.hpp"
 #include "io/input_problem.hpp"
 
 namespace cvtmesh {
@@ -14,11 +15,8 @@ std::vector<Edge> read_feature_edges(const std::filesystem::path& path) {
   std::vector<Edge> edges;
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
-    std::istringstream fields(line);
-    std::string first;
-    if (!(fields >> first) || first[0] == '#') continue;
-    fields.clear();
-    fields.seekg(0);
+    std::istringstream fields;
+    if (!data_line(line, fields)) continue;
     long long a = -1, b = -1;
     std::string rest;
     if (!(fields >> a >> b) || (fields >> rest) || a < 0 || b < 0 || a > 0xFFFFFFFELL ||

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cvtmesh/io.hpp"
+#include "io/data_lines.hpp"
 #include "io/input_problem.hpp"
 #include "io/read_ply.hpp"
 
@@ -25,11 +26,8 @@ std::vector<double> read_vertex_values(const std::filesystem::path& path) {
   } else {
     std::string line;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
-      std::istringstream words(line);
-      std::string first;
-      if (!(words >> first) || first[0] == '#') continue;
-      words.clear();
-      words.seekg(0);
+      std::istringstream words;
+      if (!data_line(line, words)) continue;
       double value = 0;
       std::string extra;
       if (!(words >> value) || (words >> extra) || !std::isfinite(value))

@@ -24,16 +24,12 @@ void CellPieceCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
   if (!(out.area > 0)) out.moment = v[0].point;
   const Triangle& t = surface_.triangles[p.triangle];
   for (std::size_t k = 0; k < v.size(); ++k) {
-    const RvdVertex &a = v[k], &b = v[(k + 1) % v.size()];
-    // The side lies on input edge e when both ends are on it (symbol -(e+1)).
-    for (std::int32_t s : a.symbols) {
-      if (s >= 0 || (s != b.symbols[0] && s != b.symbols[1])) continue;
-      const int e = -(s + 1);
-      const Index u = t[e], w = t[(e + 1) % 3];
-      side_chunks_[chunk].push_back({p.seed,
-                                     {std::min(u, w), std::max(u, w)},
-                                     static_cast<Index>(polygon_chunks_[chunk].size())});
-    }
+    const int e = input_edge_of_side(v[k], v[(k + 1) % v.size()]);
+    if (e < 0) continue;
+    const Index u = t[e], w = t[(e + 1) % 3];
+    side_chunks_[chunk].push_back({p.seed,
+                                   {std::min(u, w), std::max(u, w)},
+                                   static_cast<Index>(polygon_chunks_[chunk].size())});
   }
   polygon_chunks_[chunk].push_back(out);
 }

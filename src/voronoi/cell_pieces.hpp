@@ -6,12 +6,22 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <tuple>
 #include <vector>
 
 #include "cvtmesh/rvd.hpp"
 
 namespace cvtmesh {
+
+// The edge of the input triangle (0-2: edge e joins corners e and (e + 1) % 3) that the side from
+// polygon vertex a to the next, b, lies on, or -1 for a side along a bisector: the side lies on an
+// input edge when both its ends do.
+inline int input_edge_of_side(const RvdVertex& a, const RvdVertex& b) {
+  for (const std::int32_t s : a.symbols)
+    if (s < 0 && (s == b.symbols[0] || s == b.symbols[1])) return -(s + 1);
+  return -1;
+}
 
 struct CellPiece {
   Index seed;

@@ -31,7 +31,7 @@ void PieceEulerCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
     shared_[chunk].push_back({p.seed, p.triangle, {kind, a, b}});
   };
   for (std::size_t k = 0; k < v.size(); ++k) {
-    const RvdVertex &a = v[k], &b = v[(k + 1) % v.size()];
+    const RvdVertex& a = v[k];
     const double d = distance(a.point, seeds_[p.seed]);
     if (d > own.distance) {
       own.distance = d;
@@ -48,12 +48,8 @@ void PieceEulerCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
       const int e0 = -(s0 + 1), e1 = -(s1 + 1);
       share(kCorner, t[(e0 + 1) % 3 == e1 ? e1 : e0], 0);
     }
-    // The side to the next vertex lies on an input edge when both ends are on it.
-    std::int32_t along = 0;
-    for (std::int32_t s : a.symbols)
-      if (s < 0 && (s == b.symbols[0] || s == b.symbols[1])) along = s;
-    if (along < 0)
-      share(kEdge, edge_key(t, -(along + 1)), 0);
+    if (const int e = input_edge_of_side(a, v[(k + 1) % v.size()]); e >= 0)
+      share(kEdge, edge_key(t, e), 0);
     else
       --own.euler;
   }
