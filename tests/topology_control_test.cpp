@@ -477,6 +477,22 @@ TEST(HardCases, ATorusWhoseHoleIsSmallerThanTheEdgeLength) {
   expect_valid_remesh(torus(1.0, 0.95, 96, 48), 600);
 }
 
+TEST(HardCases, ATinyHoleWithTwoCornersStaysAHole) {
+  // A flat diamond with a narrow rhombic hole 0.02 long at its centre, edge length about 0.1.
+  // The hole's ends turn by 169 degrees and are corners; its sides turn by 11 and are not, so
+  // its loop is two curves between the same two corners, too short for a seed of their own.
+  constexpr double h = 0.01;
+  TriangleMesh m;
+  m.vertices = {{-1, 0, 0}, {0, -1, 0},      {1, 0, 0}, {0, 1, 0},
+                {-h, 0, 0}, {0, -h / 10, 0}, {h, 0, 0}, {0, h / 10, 0}};
+  for (Index i = 0; i < 4; ++i) {
+    const Index next = (i + 1) % 4;
+    m.triangles.push_back({i, next, 4 + next});
+    m.triangles.push_back({i, 4 + next, 4 + i});
+  }
+  expect_valid_remesh(m, 300);
+}
+
 // Three square sheets meeting along the line x = z = 0, a T in section: each n×n grid, vertices
 // shared along the junction, whose n edges are used by three triangles each.
 TriangleMesh three_sheet_junction(int n) {

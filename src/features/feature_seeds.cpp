@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 
@@ -18,15 +19,36 @@ constexpr Index kNoSeed = std::numeric_limits<Index>::max();
 // The shortest missing link, in spacings, that a new seed splits (see mend_missing_links).
 constexpr double kShortestSplitLink = 0.9;
 
-// How many seeds go inside curve c (its corners not counted).
+// Per curve: whether another open curve joins the same two corners, so that the two make a
+// loop (a small hole with two corners, a rim cut twice) whose two corner seeds alone would give
+// it a single output edge.
+std::vector<bool> digon_sides(const Features& f) {
+  std::map<std::pair<Index, Index>, std::size_t> joining;
+  auto ends = [&](std::size_t c) {
+    const auto& v = f.curves[c].vertices;
+    return std::minmax(v.front(), v.back());
+  };
+  for (std::size_t c = 0; c < f.curves.size(); ++c)
+    if (!f.curves[c].closed) ++joining[ends(c)];
+  std::vector<bool> result(f.curves.size());
+  for (std::size_t c = 0; c < f.curves.size(); ++c) {
+    const auto [a, b] = ends(c);
+    result[c] = !f.curves[c].closed && a != b && joining[{a, b}] > 1;
+  }
+  return result;
+}
+
+// How many seeds go inside curve c (its corners not counted). Every loop of curves gets at
+// least 3 seeds, so that it stays a loop of output edges however short it is.
 std::size_t seeds_inside(const CurveProjector& curves, const Features& f, std::size_t c,
-                         const CurveSpacing& spacing) {
+                         bool digon_side, const CurveSpacing& spacing) {
   const auto n = static_cast<std::size_t>(
       std::llround(spacing.length(c, 0, curves.length(c)) / spacing.spacing()));
   if (curves.closed(c)) return std::max<std::size_t>(n, 3);
   const auto& v = f.curves[c].vertices;
   if (v.front() == v.back()) return std::max<std::size_t>(n, 3) - 1;  // a loop through a corner
-  return n > 0 ? n - 1 : 0;
+  const std::size_t inside = n > 0 ? n - 1 : 0;
+  return digon_side ? std::max<std::size_t>(inside, 1) : inside;
 }
 
 // Whether a seed at the middle of `link`'s stretch would make both halves edges of the
@@ -71,8 +93,9 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
   std::vector<Wanted> wanted;
   for (Index v : features.corners)
     wanted.push_back({mesh.vertices[v], SeedConstraints::Kind::corner, 0});
+  const std::vector<bool> digon = digon_sides(features);
   for (std::size_t c = 0; c < curves.size(); ++c) {
-    const std::size_t n = seeds_inside(curves, features, c, spacing);
+    const std::size_t n = seeds_inside(curves, features, c, digon[c], spacing);
     // Evenly spaced by measured length; a loop's seeds start half a step from its first vertex.
     const double step =
         spacing.length(c, 0, curves.length(c)) / static_cast<double>(curves.closed(c) ? n : n + 1);
