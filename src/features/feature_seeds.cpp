@@ -149,6 +149,15 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
   return result;
 }
 
+std::size_t feature_seed_count(const Features& features, const CurveProjector& curves,
+                               const CurveSpacing& spacing) {
+  const std::vector<bool> digon = digon_sides(features);
+  std::size_t count = features.corners.size();
+  for (std::size_t c = 0; c < curves.size(); ++c)
+    count += seeds_inside(curves, features, c, digon[c], spacing);
+  return count;
+}
+
 std::size_t snap_stray_seeds(std::vector<Vec3>& seeds, SeedConstraints& c,
                              const CurveProjector& curves, const CurveSpacing& spacing) {
   const PointTree tree(seeds);

@@ -36,6 +36,11 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
                                     const Features& features, const CurveProjector& curves,
                                     const CurveSpacing& spacing);
 
+// How many feature seeds place_feature_seeds wants for these features at this spacing (at
+// most: where curves overlap in space, it wants a point once); it needs more seeds than that.
+std::size_t feature_seed_count(const Features& features, const CurveProjector& curves,
+                               const CurveSpacing& spacing);
+
 // CVT is indifferent to which seeds cover a curve: a surface seed may end up nearest to a
 // stretch of one, where the output would then cut the crease. Each such seed (nearest to a
 // sample of a curve, samples an eighth of a spacing apart) joins that curve. Returns how

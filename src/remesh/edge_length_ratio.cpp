@@ -9,8 +9,9 @@
 
 namespace cvtmesh {
 
-EdgeLengthRatio edge_length_ratio(const TriangleMesh& output, const SurfaceProjector& projector,
-                                  const SizeField* field, double uniform) {
+std::vector<double> edge_length_ratios(const TriangleMesh& output,
+                                       const SurfaceProjector& projector, const SizeField* field,
+                                       double uniform) {
   std::vector<double> target(output.vertices.size(), uniform);
   if (field) {
     tbb::parallel_for(std::size_t{0}, target.size(), [&](std::size_t v) {
@@ -22,6 +23,10 @@ EdgeLengthRatio edge_length_ratio(const TriangleMesh& output, const SurfaceProje
   for (const Edge& e : sorted_edges(output))
     ratio.push_back(distance(output.vertices[e[0]], output.vertices[e[1]]) /
                     ((target[e[0]] + target[e[1]]) / 2));
+  return ratio;
+}
+
+EdgeLengthRatio ratio_percentiles(std::vector<double> ratio) {
   if (ratio.empty()) return {};
   std::sort(ratio.begin(), ratio.end());
   const auto percentile = [&](double p) {

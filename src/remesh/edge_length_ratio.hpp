@@ -7,10 +7,14 @@
 
 namespace cvtmesh {
 
-// Over the output's edges, the 5th, 50th and 95th percentiles of length / target, the target
-// being the mean of the size field at the surface points nearest to the edge's ends (the
-// projector's surface is the field's mesh), or `uniform` without a field.
-EdgeLengthRatio edge_length_ratio(const TriangleMesh& output, const SurfaceProjector& projector,
-                                  const SizeField* field, double uniform);
+// Per output edge, length / target, the target being the mean of the size field at the surface
+// points nearest to the edge's ends (the projector's surface is the field's mesh), or `uniform`
+// without a field.
+std::vector<double> edge_length_ratios(const TriangleMesh& output,
+                                       const SurfaceProjector& projector, const SizeField* field,
+                                       double uniform);
+
+// Their 5th, 50th and 95th percentiles.
+EdgeLengthRatio ratio_percentiles(std::vector<double> ratios);
 
 }  // namespace cvtmesh

@@ -1,0 +1,18 @@
+// Each connected component of the input is remeshed on its own (issue 18): a seed belongs to one
+// component and never owns another's surface, however close the two lie, so no component is
+// merged, dropped or cut by its neighbour's cells.
+#pragma once
+
+#include "cvtmesh/remesh.hpp"
+
+namespace cvtmesh {
+
+// remesh_unit on each connected component (triangles sharing vertices) of a mesh of about unit
+// size, the outputs side by side in the order of the components' first triangles. The
+// requested count is shared in proportion to area, each component getting at least 4 vertices
+// and more than its feature seeds (so a small part with many corners still fits); a sizing
+// given as lengths without a count gives each component the count its lengths ask for. With
+// initial seeds, or a single component, the mesh is remeshed whole.
+RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings);
+
+}  // namespace cvtmesh

@@ -1,0 +1,35 @@
+// The remeshing pipeline (paper §4) on one surface of about unit size: remesh() scales the input
+// and runs it on each connected component (remesh/by_component).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "cvtmesh/remesh.hpp"
+
+namespace cvtmesh {
+
+class SizeField;
+
+// The edge length of N seeds spread evenly over area A as equilateral triangles (about two
+// triangles per vertex): the inverse of requested_vertex_count's formula.
+double edge_length_for(double area, std::size_t n);
+
+// Throws InvalidArgument unless the settings give one output size at most, and none only for
+// initial seeds (their count is the size) or target lengths given as they are.
+void check_output_size(const RemeshSettings& s);
+
+// requested_vertex_count for a mesh of about unit size (see size_exponent in cvtmesh/mesh.hpp),
+// with the size field of its sizing, if any.
+std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s,
+                              const SizeField* field);
+
+struct UnitRemesh {
+  RemeshResult result;
+  std::vector<double> edge_ratios;  // per output edge: length / target (edge_length_ratios)
+};
+
+// The remesher proper, on a mesh of about unit size.
+UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings);
+
+}  // namespace cvtmesh

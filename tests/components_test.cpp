@@ -1,0 +1,127 @@
+// Each connected component is remeshed on its own (issue 18, "components and sheets stay
+// apart"): its own seeds, a share of the count by area, never fewer than its features need.
+#include <gtest/gtest.h>
+
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cvtmesh/errors.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/topology.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+// A unit disk and a disk of radius 0.5 beside it in the same plane, their rims 0.001 apart:
+// far closer than the output's edge length (about 0.12 at 800 vertices).
+TriangleMesh touching_disks() {
+  return concatenate(disk(12, 48), transformed(disk(12, 48), 0.5, {1.501, 0, 0}));
+}
+
+bool on_small_disk(const Vec3& p) { return p.x > 1.0005; }
+
+TEST(Components, DisksWhoseRimsNearlyTouchStayApartWithCountsByArea) {
+  RemeshSettings s;
+  s.vertices = 800;
+  const RemeshResult r = remesh(touching_disks(), s);
+  const TopologyReport t = analyze_topology(r.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(t.boundary_loops, 2u);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  // No triangle joins the disks, and each output vertex lies on the disk it belongs to.
+  for (const Triangle& tri : r.mesh.triangles) {
+    EXPECT_EQ(on_small_disk(r.mesh.vertices[tri[0]]), on_small_disk(r.mesh.vertices[tri[1]]));
+    EXPECT_EQ(on_small_disk(r.mesh.vertices[tri[0]]), on_small_disk(r.mesh.vertices[tri[2]]));
+  }
+  for (const Vec3& p : r.mesh.vertices) {
+    if (on_small_disk(p))
+      EXPECT_LE(norm(p - Vec3{1.501, 0, 0}), 0.5 + 1e-9);
+    else
+      EXPECT_LE(norm(p), 1 + 1e-9);
+  }
+  // Areas 4:1 (both polygons alike): 640 and 160 of the 800.
+  const auto small = static_cast<std::size_t>(
+      std::count_if(r.mesh.vertices.begin(), r.mesh.vertices.end(), on_small_disk));
+  EXPECT_EQ(r.mesh.vertices.size(), 800u);
+  EXPECT_EQ(small, 160u);
+}
+
+// A flat star of 8 points, 0.2 across: a fan whose rim turns sharply at each of its 16
+// vertices, all of them corners.
+TriangleMesh star() {
+  TriangleMesh m;
+  m.vertices.push_back({0, 0, 0});
+  for (int k = 0; k < 16; ++k) {
+    const double angle = 2 * M_PI * k / 16, radius = k % 2 == 0 ? 0.1 : 0.06;
+    m.vertices.push_back({radius * std::cos(angle), radius * std::sin(angle), 0});
+  }
+  for (Index k = 0; k < 16; ++k) m.triangles.push_back({0, 1 + k, 1 + (k + 1) % 16});
+  return m;
+}
+
+TEST(Components, ASmallPartBesideALargeOneGetsTheVerticesItsCornersNeed) {
+  // The star's share of 200 vertices by area is none: it needs its 16 corners and one more.
+  const TriangleMesh m = concatenate(icosphere(3, 4.0), transformed(star(), 1.0, {5, 0, 0}));
+  RemeshSettings s;
+  s.vertices = 200;
+  const RemeshResult r = remesh(m, s);
+  const TopologyReport t = analyze_topology(r.mesh);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(same_topology(t, analyze_topology(m)));
+  EXPECT_EQ(r.features.corners.size(), 16u);
+  for (const Index c : r.features.corners)
+    EXPECT_NE(std::find(r.mesh.vertices.begin(), r.mesh.vertices.end(), m.vertices[c]),
+              r.mesh.vertices.end());
+  EXPECT_GT(r.mesh.vertices.size(), 200u);
+}
+
+TEST(Components, UserFeatureEdgesOfALaterComponentAreKeptInTheCallersIds) {
+  const TriangleMesh m = touching_disks();
+  const auto first_disk = static_cast<Index>(disk(12, 48).vertices.size());
+  // An interior edge of the small disk: the first edge of its last triangle (interior).
+  const Triangle& tri = m.triangles[disk(12, 48).triangles.size()];
+  const Edge e{std::min(tri[0], tri[1]), std::max(tri[0], tri[1])};
+  ASSERT_GE(e[0], first_disk);
+  RemeshSettings s;
+  s.vertices = 800;
+  s.features.user_edges = {e};
+  const RemeshResult r = remesh(m, s);
+  EXPECT_TRUE(std::binary_search(r.features.edges.begin(), r.features.edges.end(), e));
+}
+
+TEST(Components, AUserEdgeThatIsNoEdgeIsRejectedInTheCallersIds) {
+  RemeshSettings s;
+  s.vertices = 800;
+  s.features.user_edges = {{0, 700}};  // vertices of different disks
+  try {
+    remesh(touching_disks(), s);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& error) {
+    EXPECT_NE(std::string(error.what()).find("feature edge 0 700"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(Components, TheOutputDoesNotDependOnTheThreadCount) {
+  RemeshSettings s;
+  s.vertices = 500;
+  const TriangleMesh m = touching_disks();
+  const RemeshResult a = remesh(m, s);
+  RemeshResult b;
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    b = remesh(m, s);
+  }
+  EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+}
+
+}  // namespace
+}  // namespace cvtmesh
