@@ -109,6 +109,20 @@ TEST(Components, AUserEdgeThatIsNoEdgeIsRejectedInTheCallersIds) {
   }
 }
 
+TEST(Components, ComponentsWithoutAreaAreLeftOutAsTheWholeWouldLeaveThem) {
+  // Two disks, and a triangle whose corners lie on a line.
+  TriangleMesh m = touching_disks();
+  const auto first = static_cast<Index>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), {{0, 0, 3}, {1, 0, 3}, {2, 0, 3}});
+  m.triangles.push_back({first, first + 1, first + 2});
+  RemeshSettings s;
+  s.vertices = 800;
+  const RemeshResult r = remesh(m, s);
+  const TopologyReport t = analyze_topology(r.mesh);
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(r.mesh.vertices.size(), 800u);
+}
+
 TEST(Components, TheOutputDoesNotDependOnTheThreadCount) {
   RemeshSettings s;
   s.vertices = 500;

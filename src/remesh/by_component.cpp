@@ -211,6 +211,9 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
 RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings) {
   if (!settings.initial_seeds.empty()) return remesh_unit(mesh, settings).result;
   std::vector<Component> parts = split_components(mesh);
+  // A component without area (degenerate triangles only) has nothing to remesh: the whole
+  // gives it no seed either.
+  std::erase_if(parts, [](const Component& part) { return !(surface_area(part.mesh) > 0); });
   if (parts.size() <= 1) return remesh_unit(mesh, settings).result;
 
   const auto start = std::chrono::steady_clock::now();
