@@ -24,7 +24,9 @@ TriangleMesh touching_disks() {
   return concatenate(disk(12, 48), transformed(disk(12, 48), 0.5, {1.501, 0, 0}));
 }
 
-bool on_small_disk(const Vec3& p) { return p.x > 1.0005; }
+bool on_small_disk(const Vec3& p) {
+  return p.x > 1.0005;
+}
 
 TEST(Components, DisksWhoseRimsNearlyTouchStayApartWithCountsByArea) {
   RemeshSettings s;
