@@ -87,8 +87,9 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
       r.polish_rounds);
   if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
     text += fmt::format(
-        "  topology  {} rounds of control: {} seeds added in split or non-disc cells, {} at defects, {} on "
-        "cut curves; {} feature edges flipped in, {} triangles added at boundary tips\n",
+        "  topology  {} rounds of control: {} seeds added in split or non-disc cells, {} at "
+        "defects, {} on cut curves; {} feature edges flipped in, {} triangles added at boundary "
+        "tips\n",
         r.mend_rounds, r.islands_seeded, r.seeds_refined, r.links_mended, r.links_flipped,
         r.tips_closed);
   return report;
