@@ -119,10 +119,12 @@ TEST(Components, ComponentsWithoutAreaAreLeftOutAsTheWholeWouldLeaveThem) {
   m.triangles.push_back({first, first + 1, first + 2});
   RemeshSettings s;
   s.vertices = 800;
+  s.features.user_edges = {{first, first + 1}};  // on the flat triangle: no edge to keep
   const RemeshResult r = remesh(m, s);
   const TopologyReport t = analyze_topology(r.mesh);
   EXPECT_EQ(t.components, 2u);
   EXPECT_EQ(r.mesh.vertices.size(), 800u);
+  EXPECT_TRUE(r.features.corners.empty());  // no stray corner where the edge was mapped
 }
 
 TEST(Components, TheOutputDoesNotDependOnTheThreadCount) {

@@ -104,7 +104,8 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
                                                const std::vector<Component>& parts,
                                                const RemeshSettings& settings) {
   std::vector<RemeshSettings> all(parts.size(), settings);
-  std::vector<Index> component(mesh.vertices.size()), local(mesh.vertices.size());
+  constexpr Index kNone = std::numeric_limits<Index>::max();  // on no component with area
+  std::vector<Index> component(mesh.vertices.size(), kNone), local(mesh.vertices.size());
   for (Index c = 0; c < parts.size(); ++c)
     for (Index v = 0; v < parts[c].input_vertex.size(); ++v) {
       component[parts[c].input_vertex[v]] = c;
@@ -123,6 +124,7 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
     detect_features(mesh, check);
   }
   for (const Edge& e : settings.features.user_edges) {
+    if (component[e[0]] == kNone) continue;  // on a component without area: nothing to keep
     const Index a = local[e[0]], b = local[e[1]];
     all[component[e[0]]].features.user_edges.push_back({std::min(a, b), std::max(a, b)});
   }
