@@ -26,6 +26,7 @@ constexpr std::size_t kFewestVertices = 4;
 struct Component {
   TriangleMesh mesh;
   std::vector<Index> input_vertex;  // per vertex of `mesh`: its id in the whole
+  double area = 0;
 };
 
 // Connected components (triangles sharing a vertex), ordered by their first triangle.
@@ -54,6 +55,7 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
     }
     part.mesh.triangles.push_back(mapped);
   }
+  for (Component& part : parts) part.area = surface_area(part.mesh);
   return parts;
 }
 
@@ -81,13 +83,14 @@ std::vector<std::size_t> apportion(std::size_t total, const std::vector<double>&
 // At least `count`, and more than the feature seeds the component's features want at the
 // spacing that count gives it (which shrinks as the count grows, so this settles in a few steps;
 // curve seeds grow with the square root of the count).
-std::size_t enough_for_features(const TriangleMesh& mesh, const FeatureSettings& settings,
+std::size_t enough_for_features(const Component& part, const FeatureSettings& settings,
                                 std::size_t count) {
+  const TriangleMesh& mesh = part.mesh;
   count = std::max(count, kFewestVertices);
   const Features features = detect_features(mesh, settings);
   if (features.empty()) return count;
   const CurveProjector curves(mesh, features);
-  const double area = surface_area(mesh);
+  const double area = part.area;
   for (int step = 0; step < 16; ++step) {
     const std::size_t need =
         feature_seed_count(features, curves, CurveSpacing(edge_length_for(area, count))) + 1;
@@ -138,7 +141,7 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
   if (!lengths_as_given) {
     const std::size_t total = requested_vertex_count(mesh, settings);
     std::vector<double> areas;
-    for (const Component& part : parts) areas.push_back(surface_area(part.mesh));
+    for (const Component& part : parts) areas.push_back(part.area);
     const std::vector<std::size_t> counts = apportion(total, areas);
     // Features at the scale of the whole output, in every component alike.
     const double spacing = edge_length_for(surface_area(mesh), total);
@@ -147,7 +150,7 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
       if (s.features.scale == 0) s.features.scale = spacing;
       s.vertices = settings.mode == CvtMode::rcvt
                        ? std::max(counts[c], kFewestVertices)
-                       : enough_for_features(parts[c].mesh, s.features, counts[c]);
+                       : enough_for_features(parts[c], s.features, counts[c]);
       s.edge_length = s.edge_length_rel = 0;
     }
   }
@@ -215,7 +218,7 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
   std::vector<Component> parts = split_components(mesh);
   // A component without area (degenerate triangles only) has nothing to remesh: the whole
   // gives it no seed either.
-  std::erase_if(parts, [](const Component& part) { return !(surface_area(part.mesh) > 0); });
+  std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
   if (parts.size() <= 1) return remesh_unit(mesh, settings).result;
 
   const auto start = std::chrono::steady_clock::now();
