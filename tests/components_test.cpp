@@ -127,6 +127,57 @@ TEST(Components, ComponentsWithoutAreaAreLeftOutAsTheWholeWouldLeaveThem) {
   EXPECT_TRUE(r.features.corners.empty());  // no stray corner where the edge was mapped
 }
 
+// Two spheres, the second's lowest vertex welded to the first's highest: one component with a
+// non-manifold vertex, as two cones meeting tip to tip (hourglass_ico.obj in ../shared/data).
+TriangleMesh spheres_touching_at_a_vertex() {
+  const TriangleMesh a = icosphere(2), b = icosphere(2, 0.5);
+  auto extreme = [](const TriangleMesh& m, double sign) {
+    Index best = 0;
+    for (Index v = 1; v < m.vertices.size(); ++v)
+      if (sign * m.vertices[v].z > sign * m.vertices[best].z) best = v;
+    return best;
+  };
+  const Index top = extreme(a, 1), bottom = extreme(b, -1);
+  const Vec3 offset = a.vertices[top] - b.vertices[bottom];
+  TriangleMesh m = a;
+  std::vector<Index> id(b.vertices.size());
+  for (Index v = 0; v < b.vertices.size(); ++v) {
+    if (v == bottom) {
+      id[v] = top;
+      continue;
+    }
+    id[v] = static_cast<Index>(m.vertices.size());
+    m.vertices.push_back(b.vertices[v] + offset);
+  }
+  for (const Triangle& t : b.triangles) m.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
+  return m;
+}
+
+TEST(Components, PartsTouchingAtAVertexStillTouchThereAndNowhereElse) {
+  const TriangleMesh m = spheres_touching_at_a_vertex();
+  const TopologyReport input = analyze_topology(m);
+  ASSERT_EQ(input.components, 1u);
+  ASSERT_EQ(input.nonmanifold_vertices, 1u);
+  RemeshSettings s;
+  s.vertices = 600;
+  const RemeshResult r = remesh(m, s);
+  const TopologyReport t = analyze_topology(r.mesh);
+  EXPECT_TRUE(same_topology(t, input));  // one component, Euler characteristic 3
+  EXPECT_EQ(t.nonmanifold_edges, 0u);
+  EXPECT_EQ(t.nonmanifold_vertices, 1u);
+  EXPECT_TRUE(t.consistently_oriented);
+  // The pinch (the only vertex of both spheres) is an output vertex at exactly its input
+  // position, once, and the requested count is kept.
+  const TriangleMesh first = icosphere(2);
+  Index pinch = 0;
+  for (std::size_t k = first.triangles.size(); k < m.triangles.size(); ++k)
+    for (const Index v : m.triangles[k])
+      if (v < first.vertices.size()) pinch = v;
+  EXPECT_EQ(r.features.corners, std::vector<Index>{pinch});
+  EXPECT_EQ(std::count(r.mesh.vertices.begin(), r.mesh.vertices.end(), m.vertices[pinch]), 1);
+  EXPECT_EQ(r.mesh.vertices.size(), 600u);
+}
+
 TEST(Components, TheOutputDoesNotDependOnTheThreadCount) {
   RemeshSettings s;
   s.vertices = 500;

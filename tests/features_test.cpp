@@ -239,6 +239,28 @@ TEST(RemeshFeatures, UserEdgesAloneAreKept) {
   EXPECT_EQ(r.feature_edges_missing, 0u);
 }
 
+TEST(Features, UserCornersAreCornersAndChecked) {
+  const TriangleMesh sphere = testing::icosphere(2);
+  FeatureSettings s;
+  s.user_corners = {7, 3};
+  const Features f = detect_features(sphere, s);
+  EXPECT_EQ(f.corners, (std::vector<Index>{3, 7}));
+  EXPECT_TRUE(f.edges.empty());
+  EXPECT_FALSE(f.empty());
+  s.user_corners = {static_cast<Index>(sphere.vertices.size())};
+  EXPECT_THROW(detect_features(sphere, s), InvalidArgument);
+}
+
+TEST(RemeshFeatures, AUserCornerAloneOnASmoothSurfaceIsAnOutputVertex) {
+  const TriangleMesh sphere = testing::icosphere(3);
+  FeatureSettings s;
+  s.user_corners = {5};
+  const RemeshResult r = remesh_to(sphere, 400, s);
+  EXPECT_EQ(exact_corners(sphere, r.features, r.mesh), 1u);
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(sphere)));
+  EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 25.0);
+}
+
 void expect_boundaries_kept(const TriangleMesh& input, std::size_t vertices) {
   const RemeshResult r = remesh_to(input, vertices);
   const TopologyReport in = analyze_topology(input), out = analyze_topology(r.mesh);

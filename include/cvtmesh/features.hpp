@@ -29,6 +29,10 @@ struct FeatureSettings {
   bool creases_at_scale = true;  // the CLI turns it off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.
   std::vector<Edge> user_edges;
+  // More corners, chosen by the user (vertex ids): each becomes an output vertex at exactly its
+  // position, on a curve or alone on the surface (remesh pins the pinch vertex where two parts
+  // touch this way, so that the output touches there too).
+  std::vector<Index> user_corners;
 };
 
 // A chain of feature edges between two corners, or a closed loop without corners.
@@ -42,10 +46,11 @@ struct Features {
   std::vector<Index> corners;  // sorted
   std::vector<FeatureCurve> curves;
 
-  bool empty() const { return edges.empty(); }
+  bool empty() const { return edges.empty() && corners.empty(); }
 };
 
-// InvalidArgument when a user edge names a vertex out of range or is not an edge of the mesh.
+// InvalidArgument when a user edge names a vertex out of range or is not an edge of the mesh, or a
+// user corner is out of range.
 Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settings);
 
 // The narrowest angle of the surface between two feature edges at a vertex (summed over the

@@ -132,9 +132,10 @@ struct RemeshResult {
 // more than 50 million).
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& settings);
 
-// Each connected component is remeshed on its own, with its own seeds (none owns another
-// component's surface): the count is shared by area, each component getting at least 4 vertices
-// and more than its feature seeds. With initial seeds the mesh is remeshed whole.
+// Each connected component (triangles joined by edges) is remeshed on its own, with its own seeds
+// (none owns another component's surface): the count is shared by area, each component getting
+// at least 4 vertices and more than its feature seeds. Components that touch at a vertex keep it
+// as a corner and still touch there in the output. With initial seeds the mesh is remeshed whole.
 // Throws InvalidArgument for bad settings, InputError for a mesh without area, ResourceError
 // when the job would need more memory than is available (checked first), Cancelled when
 // settings.cancel asked to stop.

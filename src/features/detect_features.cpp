@@ -63,15 +63,18 @@ bool sharp_turn(const TriangleMesh& mesh, const Adjacency& adj, Index v, double 
   return lengths > 0 && dot(in, out) < cos_threshold * lengths;
 }
 
-// Corners and curves of the feature edges f.edges.
-void chain(const TriangleMesh& mesh, double cos_threshold, Features& f) {
+// Corners and curves of the feature edges f.edges, with the user's corners among the corners.
+void chain(const TriangleMesh& mesh, double cos_threshold, const std::vector<Index>& user_corners,
+           Features& f) {
   f.corners.clear();
   f.curves.clear();
   const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
   std::vector<bool> corner(mesh.vertices.size(), false);
+  for (Index v : user_corners) corner[v] = true;
   for (Index v = 0; v < mesh.vertices.size(); ++v) {
     const std::size_t d = adj.degree(v);
-    corner[v] = (d > 0 && d != 2) || (d == 2 && sharp_turn(mesh, adj, v, cos_threshold));
+    corner[v] =
+        corner[v] || (d > 0 && d != 2) || (d == 2 && sharp_turn(mesh, adj, v, cos_threshold));
     if (corner[v]) f.corners.push_back(v);
   }
 
@@ -154,13 +157,18 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     f.edges.push_back(e);
     std::erase(sharp_edges, e);
   }
+  for (Index v : settings.user_corners)
+    if (v >= mesh.vertices.size())
+      throw InvalidArgument("corner " + std::to_string(v) +
+                            ": vertex id out of range (the mesh has " +
+                            std::to_string(mesh.vertices.size()) + " vertices)");
   auto sharp_only = [&](const Edge& e) {
     return std::binary_search(sharp_edges.begin(), sharp_edges.end(), e);
   };
   std::sort(f.edges.begin(), f.edges.end());
   f.edges.erase(std::unique(f.edges.begin(), f.edges.end()), f.edges.end());
 
-  chain(mesh, cos_threshold, f);
+  chain(mesh, cos_threshold, settings.user_corners, f);
   if (settings.scale > 0) {
     // Curves of sharp edges only that are no features at the output's scale go, and the rest is
     // chained again: a corner of a dropped curve may be an ordinary curve vertex now.
@@ -185,7 +193,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       std::erase_if(f.edges, [&](const Edge& e) {
         return std::binary_search(dropped.begin(), dropped.end(), e);
       });
-      chain(mesh, cos_threshold, f);
+      chain(mesh, cos_threshold, settings.user_corners, f);
     }
   }
   return f;

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "features/curve_projector.hpp"
 #include "features/curve_spacing.hpp"
+#include "features/edge_uses.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
 #include "geometry/surface_projector.hpp"
@@ -26,36 +28,56 @@ constexpr std::size_t kFewestVertices = 4;
 struct Component {
   TriangleMesh mesh;
   std::vector<Index> input_vertex;  // per vertex of `mesh`: its id in the whole
+  std::vector<Index> pinches;       // vertices (of `mesh`) that other components have too
   double area = 0;
 };
 
-// Connected components (triangles sharing a vertex), ordered by their first triangle.
+// Connected components (triangles sharing an edge), ordered by their first triangle. A vertex
+// where components touch (a non-manifold vertex, as where two cones meet tip to tip) is in each
+// of them, as one of their `pinches`.
 std::vector<Component> split_components(const TriangleMesh& mesh) {
-  UnionFind sets(mesh.vertices.size());
-  for (const Triangle& t : mesh.triangles) sets.unite(t[0], t[1]), sets.unite(t[0], t[2]);
+  UnionFind sets(mesh.triangles.size());
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  for (std::size_t k = 1; k < uses.size(); ++k)
+    if (uses[k].edge == uses[k - 1].edge) sets.unite(uses[k].triangle(), uses[k - 1].triangle());
   constexpr Index kNone = std::numeric_limits<Index>::max();
-  std::vector<Index> component_of_root(mesh.vertices.size(), kNone);
-  std::vector<Index> local(mesh.vertices.size(), kNone);  // a vertex's id in its component
-  std::vector<Component> parts;
-  for (const Triangle& t : mesh.triangles) {
-    Index& c = component_of_root[sets.find(t[0])];
+  std::vector<Index> component_of_root(mesh.triangles.size(), kNone);
+  std::vector<std::vector<Index>> triangles_of;  // per component, in input order
+  for (Index t = 0; t < mesh.triangles.size(); ++t) {
+    Index& c = component_of_root[sets.find(t)];
     if (c == kNone) {
-      c = static_cast<Index>(parts.size());
-      parts.emplace_back();
+      c = static_cast<Index>(triangles_of.size());
+      triangles_of.emplace_back();
     }
-    Component& part = parts[c];
-    Triangle mapped;
-    for (int k = 0; k < 3; ++k) {
-      if (local[t[k]] == kNone) {
-        local[t[k]] = static_cast<Index>(part.input_vertex.size());
-        part.input_vertex.push_back(t[k]);
-        part.mesh.vertices.push_back(mesh.vertices[t[k]]);
-      }
-      mapped[k] = local[t[k]];
-    }
-    part.mesh.triangles.push_back(mapped);
+    triangles_of[c].push_back(t);
   }
-  for (Component& part : parts) part.area = surface_area(part.mesh);
+  std::vector<Component> parts(triangles_of.size());
+  std::vector<Index> owner(mesh.vertices.size(), kNone);  // the last component that has it
+  std::vector<Index> local(mesh.vertices.size());         // and its id there
+  std::vector<Index> components_at(mesh.vertices.size(), 0);
+  for (Index c = 0; c < parts.size(); ++c) {
+    Component& part = parts[c];
+    for (const Index t : triangles_of[c]) {
+      Triangle mapped;
+      for (int k = 0; k < 3; ++k) {
+        const Index v = mesh.triangles[t][k];
+        if (owner[v] != c) {
+          owner[v] = c;
+          ++components_at[v];
+          local[v] = static_cast<Index>(part.input_vertex.size());
+          part.input_vertex.push_back(v);
+          part.mesh.vertices.push_back(mesh.vertices[v]);
+        }
+        mapped[k] = local[v];
+      }
+      part.mesh.triangles.push_back(mapped);
+    }
+  }
+  for (Component& part : parts) {
+    part.area = surface_area(part.mesh);
+    for (Index v = 0; v < part.input_vertex.size(); ++v)
+      if (components_at[part.input_vertex[v]] > 1) part.pinches.push_back(v);
+  }
   return parts;
 }
 
@@ -109,28 +131,56 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
   std::vector<RemeshSettings> all(parts.size(), settings);
   constexpr Index kNone = std::numeric_limits<Index>::max();  // on no component with area
   std::vector<Index> component(mesh.vertices.size(), kNone), local(mesh.vertices.size());
-  for (Index c = 0; c < parts.size(); ++c)
+  std::vector<bool> pinch(mesh.vertices.size(), false);
+  for (Index c = 0; c < parts.size(); ++c) {
     for (Index v = 0; v < parts[c].input_vertex.size(); ++v) {
       component[parts[c].input_vertex[v]] = c;
       local[parts[c].input_vertex[v]] = v;
     }
+    for (const Index v : parts[c].pinches) pinch[parts[c].input_vertex[v]] = true;
+  }
   for (RemeshSettings& s : all) {
     s.hausdorff.reset();
     s.features.user_edges.clear();
+    s.features.user_corners.clear();
     s.sizing.edge_lengths.clear();
   }
-  if (!settings.features.user_edges.empty()) {
+  // Where components touch, each gets the vertex as a corner, and the outputs are welded there.
+  for (Index c = 0; c < parts.size(); ++c) all[c].features.user_corners = parts[c].pinches;
+  if (!settings.features.user_edges.empty() || !settings.features.user_corners.empty()) {
     // Checked on the whole, so that an error names the caller's vertex ids; an edge of the mesh
     // lies in one component.
     FeatureSettings check = settings.features;
     check.sharp_edges = false;
     detect_features(mesh, check);
   }
+  // A vertex's id in component c; a vertex where components touch is in several.
+  auto local_in = [&](Index c, Index v) {
+    if (component[v] == c) return local[v];
+    const std::vector<Index>& ids = parts[c].input_vertex;
+    return static_cast<Index>(std::find(ids.begin(), ids.end(), v) - ids.begin());
+  };
+  auto has_edge = [&](Index c, Index a, Index b) {
+    const Index n = static_cast<Index>(parts[c].input_vertex.size());
+    const Index la = local_in(c, a), lb = local_in(c, b);
+    if (la == n || lb == n) return false;
+    for (const Triangle& t : parts[c].mesh.triangles)
+      if (std::count(t.begin(), t.end(), la) + std::count(t.begin(), t.end(), lb) == 2) return true;
+    return false;
+  };
   for (const Edge& e : settings.features.user_edges) {
-    if (component[e[0]] == kNone) continue;  // on a component without area: nothing to keep
-    const Index a = local[e[0]], b = local[e[1]];
-    all[component[e[0]]].features.user_edges.push_back({std::min(a, b), std::max(a, b)});
+    // The component of its triangles: that of an end in one component only, or else (both ends
+    // where components touch) the one that has the edge.
+    Index home = !pinch[e[0]] ? component[e[0]] : !pinch[e[1]] ? component[e[1]] : kNone;
+    for (Index c = 0; home == kNone && c < parts.size(); ++c)
+      if (has_edge(c, e[0], e[1])) home = c;
+    if (home == kNone) continue;  // on a component without area: nothing to keep
+    const Index a = local_in(home, e[0]), b = local_in(home, e[1]);
+    all[home].features.user_edges.push_back({std::min(a, b), std::max(a, b)});
   }
+  for (const Index v : settings.features.user_corners)
+    if (component[v] != kNone && !pinch[v])  // a vertex where components touch is a corner anyway
+      all[component[v]].features.user_corners.push_back(local[v]);
   if (!settings.sizing.edge_lengths.empty())
     for (Index c = 0; c < parts.size(); ++c)
       for (const Index v : parts[c].input_vertex)
@@ -139,7 +189,12 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
   const bool lengths_as_given = settings.sizing.active() && settings.vertices == 0 &&
                                 settings.edge_length == 0 && settings.edge_length_rel == 0;
   if (!lengths_as_given) {
-    const std::size_t total = requested_vertex_count(mesh, settings);
+    // A vertex where components touch is one output vertex made of a copy in each: the copies
+    // beyond the first are vertices on top of the count.
+    std::size_t copies = 0;
+    for (const Component& part : parts) copies += part.pinches.size();
+    copies -= static_cast<std::size_t>(std::count(pinch.begin(), pinch.end(), true));
+    const std::size_t total = requested_vertex_count(mesh, settings) + copies;
     std::vector<double> areas;
     for (const Component& part : parts) areas.push_back(part.area);
     const std::vector<std::size_t> counts = apportion(total, areas);
@@ -211,6 +266,49 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.time_limit_reached |= part.time_limit_reached;
 }
 
+// The output vertices at the positions of component c's pinches, as (input vertex, output vertex)
+// pairs; the output's vertices start at `offset` in the whole's.
+void find_pinches(const Component& part, const TriangleMesh& output, Index offset,
+                  std::vector<std::pair<Index, Index>>& found) {
+  std::map<Vec3, Index> wanted;
+  for (const Index v : part.pinches) wanted.emplace(part.mesh.vertices[v], part.input_vertex[v]);
+  if (wanted.empty()) return;
+  for (Index v = 0; v < output.vertices.size(); ++v)
+    if (const auto at = wanted.find(output.vertices[v]); at != wanted.end())
+      found.emplace_back(at->second, offset + v);
+}
+
+// Welds the output vertices found at the same pinch (one per component that kept it) into the
+// first, so that the output touches itself where the input did, and drops the others.
+void weld_pinches(RemeshResult& all, std::vector<std::pair<Index, Index>> found) {
+  std::sort(found.begin(), found.end());
+  std::vector<Index> into(all.mesh.vertices.size());
+  std::iota(into.begin(), into.end(), Index{0});
+  bool welded = false;
+  for (std::size_t k = 1; k < found.size(); ++k)
+    if (found[k].first == found[k - 1].first) {
+      into[found[k].second] = into[found[k - 1].second];
+      welded = true;
+    }
+  if (!welded) return;
+  std::vector<Index> new_id(into.size());
+  std::vector<Vec3> kept;
+  for (Index v = 0; v < into.size(); ++v)
+    if (into[v] == v) {
+      new_id[v] = static_cast<Index>(kept.size());
+      kept.push_back(all.mesh.vertices[v]);
+    }
+  auto renumber = [&](Index v) { return new_id[into[v]]; };
+  all.mesh.vertices = std::move(kept);
+  for (Triangle& t : all.mesh.triangles)
+    for (Index& v : t) v = renumber(v);
+  for (Edge& e : all.feature_edges) {
+    e = {renumber(e[0]), renumber(e[1])};
+    if (e[0] > e[1]) std::swap(e[0], e[1]);
+  }
+  for (Index& v : all.vertices_added) v = renumber(v);
+}
+
 }  // namespace
 
 RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings) {
@@ -226,6 +324,7 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
   RemeshResult all;
   std::vector<double> ratios;
   double gradient2_initial = 0, gradient2_final = 0;
+  std::vector<std::pair<Index, Index>> pinches;  // (input vertex, output vertex)
   for (std::size_t c = 0; c < parts.size(); ++c) {
     RemeshSettings& s = part_settings[c];
     if (settings.time_limit > 0) {
@@ -236,13 +335,17 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
       s.time_limit = std::max(settings.time_limit - spent, 1e-9);
     }
     UnitRemesh part = remesh_unit(parts[c].mesh, s);
+    find_pinches(parts[c], part.result.mesh, static_cast<Index>(all.mesh.vertices.size()), pinches);
     ratios.insert(ratios.end(), part.edge_ratios.begin(), part.edge_ratios.end());
     append(all, std::move(part.result), parts[c], gradient2_initial, gradient2_final);
   }
+  weld_pinches(all, std::move(pinches));
   all.gradient_norm_initial = std::sqrt(gradient2_initial);
   all.gradient_norm_final = std::sqrt(gradient2_final);
   std::sort(all.features.edges.begin(), all.features.edges.end());
   std::sort(all.features.corners.begin(), all.features.corners.end());
+  all.features.corners.erase(std::unique(all.features.corners.begin(), all.features.corners.end()),
+                             all.features.corners.end());  // a pinch is a corner of each part
   std::sort(all.feature_edges.begin(), all.feature_edges.end());
   all.input_topology = analyze_topology(mesh);
   all.edge_length_ratio = ratio_percentiles(std::move(ratios));

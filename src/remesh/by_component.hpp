@@ -7,8 +7,9 @@
 
 namespace cvtmesh {
 
-// remesh_unit on each connected component (triangles sharing vertices) of a mesh of about unit
-// size, the outputs side by side in the order of the components' first triangles. The
+// remesh_unit on each connected component (triangles sharing edges) of a mesh of about unit
+// size, the outputs side by side in the order of the components' first triangles; a vertex where
+// components touch is a corner of each, and their outputs are welded there. The
 // requested count is shared in proportion to area, each component getting at least 4 vertices
 // and more than its feature seeds (so a small part with many corners still fits); a sizing
 // given as lengths without a count gives each component the count its lengths ask for. With
