@@ -105,6 +105,11 @@ int run_remesh(RemeshOptions o) {
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "
                "topology control could not mend it (more vertices would resolve the thin parts)\n",
                o.output, r.triangles_removed);
+  if (!r.feature_edges_dropped.empty())
+    fmt::print(stderr,
+               "{}: warning: {} sharp edges not kept as features: tracing them cost the input's "
+               "topology\n",
+               o.output, r.feature_edges_dropped.size());
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;
 }

@@ -96,6 +96,10 @@ struct RemeshResult {
   Features features;                      // of the input
   std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
   std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks
+  // Sharp edges of the input (kept for their dihedral angle alone, not boundaries, non-manifold
+  // or user edges) left out because the output kept the input's topology only without them:
+  // topology wins (issue 18). Sorted; empty when every crease was kept.
+  std::vector<Edge> feature_edges_dropped;
   // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had
   // cut it; and seeds added in the extra pieces of restricted cells split in several, or in

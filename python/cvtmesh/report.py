@@ -200,7 +200,8 @@ def remesh_lines(remesh):
     if remesh is None:
         return ("<p>The remesh's JSON report was not given (<code>--remesh-json</code>): "
                 "the seeds added by topology control are not shown.</p>")
-    keys = ["feature_edges_in", "feature_edges_out", "feature_edges_missing", "corners_in",
+    keys = ["feature_edges_in", "feature_edges_out", "feature_edges_missing",
+            "feature_edges_dropped", "corners_in",
             "corners_out", "feature_hausdorff_max_pct", "seeds_added", "islands_seeded",
             "seeds_refined", "links_mended", "triangles_removed", "mend_rounds", "time_s"]
     rows = "".join(f'<tr><th>{k}</th><td data-key="{k}" data-mesh="remesh">'

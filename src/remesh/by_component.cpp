@@ -17,6 +17,7 @@
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
 #include "remesh/pipeline.hpp"
+#include "remesh/topology_first.hpp"
 
 namespace cvtmesh {
 
@@ -255,6 +256,10 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
                              features.curves.end());
   for (Edge e : part.feature_edges) all.feature_edges.push_back({e[0] + offset, e[1] + offset});
   all.feature_edges_missing += part.feature_edges_missing;
+  for (const Edge& e : part.feature_edges_dropped) {
+    const Index a = component.input_vertex[e[0]], b = component.input_vertex[e[1]];
+    all.feature_edges_dropped.push_back({std::min(a, b), std::max(a, b)});
+  }
   all.links_mended += part.links_mended;
   all.islands_seeded += part.islands_seeded;
   all.seeds_refined += part.seeds_refined;
@@ -312,12 +317,12 @@ void weld_pinches(RemeshResult& all, std::vector<std::pair<Index, Index>> found)
 }  // namespace
 
 RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings) {
-  if (!settings.initial_seeds.empty()) return remesh_unit(mesh, settings).result;
+  if (!settings.initial_seeds.empty()) return remesh_unit_topology_first(mesh, settings).result;
   std::vector<Component> parts = split_components(mesh);
   // A component without area (degenerate triangles only) has nothing to remesh: the whole
   // gives it no seed either.
   std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
-  if (parts.size() <= 1) return remesh_unit(mesh, settings).result;
+  if (parts.size() <= 1) return remesh_unit_topology_first(mesh, settings).result;
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<RemeshSettings> part_settings = component_settings(mesh, parts, settings);
@@ -334,7 +339,7 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       s.time_limit = std::max(settings.time_limit - spent, 1e-9);
     }
-    UnitRemesh part = remesh_unit(parts[c].mesh, s);
+    UnitRemesh part = remesh_unit_topology_first(parts[c].mesh, s);
     find_pinches(parts[c], part.result.mesh, static_cast<Index>(all.mesh.vertices.size()), pinches);
     ratios.insert(ratios.end(), part.edge_ratios.begin(), part.edge_ratios.end());
     append(all, std::move(part.result), parts[c], gradient2_initial, gradient2_final);
@@ -347,6 +352,7 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
   all.features.corners.erase(std::unique(all.features.corners.begin(), all.features.corners.end()),
                              all.features.corners.end());  // a pinch is a corner of each part
   std::sort(all.feature_edges.begin(), all.feature_edges.end());
+  std::sort(all.feature_edges_dropped.begin(), all.feature_edges_dropped.end());
   all.input_topology = analyze_topology(mesh);
   all.edge_length_ratio = ratio_percentiles(std::move(ratios));
   if (settings.hausdorff && !all.mesh.triangles.empty())

@@ -27,10 +27,11 @@ constexpr double kSmallestFlipDeg = 15;
 // halving of its balls, and the defects come and go meanwhile; polishing then pulls the points
 // it adds back out of the detail (femur.off at 1k, handles 0.0003 across, spacing 0.026: never
 // resolved with polishing, genus kept in 19 rounds without). So the rounds that follow a run
-// without the input's topology pin the seeds they add, and get a longer limit (femur.off went
-// 10 rounds without a better output before its handles were resolved).
+// without the input's topology pin the seeds they add, and only their cap or runaway growth
+// stops them: the count of triangles at defects is no measure of their progress (femur.off at
+// 5k: 20 to 44 for 16 rounds, its Euler characteristic creeping from 5 to the input's -2, which
+// it reached in the 19th).
 constexpr int kRoundsWithoutProgress = 4;
-constexpr int kPinnedRoundsWithoutProgress = 12;
 // Nor do they go on, without progress, once the seeds have grown this many times the best round's:
 // where the defects' seeds make as many new defects, the count doubles each round (a fuzzed
 // 11-triangle soup went from 40 seeds to 1,057 in 5 rounds, none of them better than the first).
@@ -253,8 +254,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     const bool out_of_time = m.placement.interrupt().out_of_time();
     const bool runaway =
         since_best > 0 && seeds.size() >= kGrowthWithoutProgress * best->seeds.size();
-    const int patience = pinned ? kPinnedRoundsWithoutProgress : kRoundsWithoutProgress;
-    if (round < last_round && since_best < patience && !runaway) {
+    if (round < last_round && (pinned || since_best < kRoundsWithoutProgress) && !runaway) {
       // Where the output shows a defect, from the seeds as extracted (one RVD for both): a seed in
       // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
       // its dual Voronoi edge crosses the surface (Delaunay refinement).

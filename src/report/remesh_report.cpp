@@ -35,6 +35,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["corners_out"] = corners_out;
   j["feature_edges_out"] = r.feature_edges.size();
   j["feature_edges_missing"] = r.feature_edges_missing;
+  j["feature_edges_dropped"] = r.feature_edges_dropped.size();
   j["feature_sector_min_deg"] = sector;
   j["links_mended"] = r.links_mended;
   j["islands_seeded"] = r.islands_seeded;
@@ -77,6 +78,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         r.features.edges.size(), r.features.curves.size(), corners_out, r.features.corners.size(),
         r.feature_edges.size(), r.feature_edges_missing, r.links_mended, distance, sector);
   }
+  if (!r.feature_edges_dropped.empty())
+    text += fmt::format(
+        "  features  {} sharp edges dropped: the output keeps the input's topology only without "
+        "them\n",
+        r.feature_edges_dropped.size());
   text += fmt::format(
       "  sizing    edge length / target: median {:.3f}, 5th-95th percentile {:.3f}-{:.3f}\n",
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
