@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "cvtmesh/errors.hpp"
+#include "system/elapsed.hpp"
 
 namespace cvtmesh {
 
@@ -22,9 +23,7 @@ double norm_of(const std::vector<Vec3>& g) {
 
 void report(const PhaseOptions& o, int iteration, double energy, double gradient) {
   if (!o.progress || !*o.progress) return;
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - o.start).count();
-  (*o.progress)({o.name, iteration, energy, gradient, elapsed});
+  (*o.progress)({o.name, iteration, energy, gradient, seconds_since(o.start)});
 }
 
 // liblbfgs calls back through a void*: this is what it points to. liblbfgs works on y = x / scale

@@ -18,6 +18,7 @@
 #include "remesh/edge_length_ratio.hpp"
 #include "remesh/pipeline.hpp"
 #include "remesh/topology_first.hpp"
+#include "system/elapsed.hpp"
 
 namespace cvtmesh {
 
@@ -335,9 +336,7 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
     if (settings.time_limit > 0) {
       // What is left of the limit; a component that starts after it works not at all (its
       // seeds as sampled make its output), as the whole would.
-      const double spent =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      s.time_limit = std::max(settings.time_limit - spent, 1e-9);
+      s.time_limit = std::max(settings.time_limit - seconds_since(start), 1e-9);
     }
     UnitRemesh part = remesh_unit_topology_first(parts[c].mesh, s);
     find_pinches(parts[c], part.result.mesh, static_cast<Index>(all.mesh.vertices.size()), pinches);

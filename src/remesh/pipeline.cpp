@@ -24,6 +24,7 @@
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
 #include "sizing/size_field.hpp"
+#include "system/elapsed.hpp"
 #include "system/memory_budget.hpp"
 
 namespace cvtmesh {
@@ -31,10 +32,6 @@ namespace cvtmesh {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds(Clock::time_point since) {
-  return std::chrono::duration<double>(Clock::now() - since).count();
-}
 
 constexpr std::size_t kMaxVertices = 50'000'000;
 
@@ -180,7 +177,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     result.input_topology = analyze_topology(mesh);  // what topology control compares with
   });
   SeedConstraints constraints;
-  result.seconds_initialization = seconds(start);
+  result.seconds_initialization = seconds_since(start);
 
   // RCVT when `bound` is null; CCVT with the seeds bound as it says otherwise.
   // Out of time, a phase does not start (issue 22: the seeds as they are make the output).
@@ -203,7 +200,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     result.energy_final = phase.energy_final;
     result.gradient_norm_final = phase.gradient_final;
     result.energies.insert(result.energies.end(), phase.energies.begin(), phase.energies.end());
-    phase_seconds = seconds(phase_start);
+    phase_seconds = seconds_since(phase_start);
   };
   if (settings.mode != CvtMode::ccvt) run_phase("rcvt", nullptr, result.seconds_rcvt);
   ccvt_setup.wait();
@@ -273,7 +270,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   }
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
-  result.seconds_extraction = seconds(extraction_start);
+  result.seconds_extraction = seconds_since(extraction_start);
   result.time_limit_reached = interrupt.timed_out();
   interrupt.check();
   if (settings.hausdorff && !result.mesh.triangles.empty())

@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "cvtmesh/topology.hpp"
+#include "system/elapsed.hpp"
 
 namespace cvtmesh {
 
@@ -36,8 +37,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
                       kept.edges.end(), std::back_inserter(dropped));
   if (dropped.empty()) return first;
   if (settings.time_limit > 0) {
-    const double spent =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double spent = seconds_since(start);
     if (spent >= settings.time_limit) return first;
     plain.time_limit = settings.time_limit - spent;
   }

@@ -13,6 +13,7 @@
 #include "cvtmesh/rvd.hpp"
 #include "geometry/point_tree.hpp"
 #include "predicates/side_of_bisector.hpp"
+#include "system/elapsed.hpp"
 #include "voronoi/seed_neighbors.hpp"
 
 namespace cvtmesh {
@@ -28,10 +29,6 @@ constexpr std::size_t kChunkSize = 1024;
 // radius searches (see Impl::for_candidates). igea → 10k seeds: 12 makes a whole remesh 2-3%
 // faster than 20 (fewer kNN results per seed and evaluation, few more radius searches).
 constexpr std::size_t kStoredNeighbors = 12;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 using Polygon = std::vector<RvdVertex>;
 
