@@ -49,6 +49,7 @@ RemeshResult remesh_from(const Defect& d, int polish_rounds) {
   s.mode = CvtMode::ccvt;
   s.iterations = 0;
   s.polish_rounds = polish_rounds;
+  s.shape_sweeps = 0;  // polishing alone (improve_shapes_test tests the last step)
   return remesh(d.surface, s);
 }
 

@@ -163,6 +163,11 @@ void add_remesh_command(CLI::App& app, Action& run) {
                   "Rounds of local Lloyd steps around badly shaped triangles (0: none)")
       ->default_val(3)
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--shape-sweeps", o->settings.shape_sweeps,
+                  "Sweeps of edge flips and vertex moves along the surface around badly shaped "
+                  "triangles, last (0: none)")
+      ->default_val(5)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,
                   "Rounds of topology control: seeds added where the output misses feature "
                   "edges or differs in topology; the best round is kept; up to twice as many "

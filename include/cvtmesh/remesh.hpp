@@ -53,6 +53,9 @@ struct RemeshSettings {
   // Rounds of local Lloyd steps around the output's badly shaped triangles (smallest angle
   // under 35° or Q under 0.65), after the optimization; 0 turns this off.
   int polish_rounds = 3;
+  // Sweeps of edge flips and vertex moves around the output's badly shaped triangles, the last
+  // step (see RemeshResult::shape_flips); 0 turns it off.
+  int shape_sweeps = 5;
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
   // The best output of all the rounds is kept; they stop early after 4 rounds in a row that
@@ -122,6 +125,11 @@ struct RemeshResult {
   // edges and vertices, folds), so that the output is always an oriented manifold. Each leaves
   // a hole: when this is not 0 the output's topology differs from the input's.
   std::size_t triangles_removed = 0;
+  // The output's last touch, after all the above: edges flipped between nearly coplanar
+  // triangles and vertices moved along the surface, around badly shaped triangles, each only
+  // where the worst triangle it touches gets better. Neither changes the topology; feature,
+  // corner and boundary vertices do not move, feature edges do not flip.
+  std::size_t shape_flips = 0, shape_moves = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it
   EdgeLengthRatio edge_length_ratio;
   bool time_limit_reached = false;  // RemeshSettings::time_limit stopped the work early

@@ -70,9 +70,9 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
                  std::optional<double> edge_length, std::optional<double> edge_length_rel,
                  const py::object& seeds, const std::optional<std::string>& seeds_file,
                  int iterations, std::size_t samples, bool no_hausdorff, int polish_rounds,
-                 int topology_rounds, const std::string& optimizer, const std::string& mode,
-                 std::uint64_t seed, std::optional<double> feature_angle, bool no_features,
-                 const py::object& feature_edges, std::optional<double> adaptive,
+                 int shape_sweeps, int topology_rounds, const std::string& optimizer,
+                 const std::string& mode, std::uint64_t seed, std::optional<double> feature_angle,
+                 bool no_features, const py::object& feature_edges, std::optional<double> adaptive,
                  const py::object& sizing, double min_edge_length, double max_edge_length,
                  double time_limit, bool quiet, int threads,
                  const std::function<void(const RemeshProgress&)>& progress) {
@@ -118,6 +118,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
   s.features.creases_at_scale = !feature_angle;  // an explicit angle forces its creases
   s.iterations = iterations;
   s.polish_rounds = polish_rounds;
+  s.shape_sweeps = shape_sweeps;
   s.topology_rounds = topology_rounds;
   s.optimizer = optimizer_named(optimizer);
   s.mode = mode_named(mode);
@@ -187,6 +188,9 @@ no_hausdorff : bool, default False
     Skip the Hausdorff distance (its report keys are None).
 polish_rounds : int, default 3
     Rounds of local Lloyd steps around badly shaped triangles (0: none).
+shape_sweeps : int, default 5
+    Sweeps of edge flips and vertex moves along the surface around badly shaped triangles,
+    the last step (0: none).
 topology_rounds : int, default 12
     Rounds of topology control: seeds added where the output misses feature edges or
     differs in topology; the best round is kept (0: none).
@@ -257,6 +261,7 @@ void add_remesh(py::module_& m) {
         py::arg("seeds") = py::none(), py::arg("seeds_file") = py::none(),
         py::arg("iterations") = defaults.iterations, py::arg("samples") = kRemeshReportSamples,
         py::arg("no_hausdorff") = false, py::arg("polish_rounds") = defaults.polish_rounds,
+        py::arg("shape_sweeps") = defaults.shape_sweeps,
         py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
         py::arg("mode") = "both", py::arg("seed") = defaults.seed,
         py::arg("feature_angle") = py::none(), py::arg("no_features") = false,

@@ -249,6 +249,8 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
     all.energies[k] += k < part.energies.size() ? part.energies[k] : last_part;
   all.defects_polished += part.defects_polished;
   all.polish_rounds = std::max(all.polish_rounds, part.polish_rounds);
+  all.shape_flips += part.shape_flips;
+  all.shape_moves += part.shape_moves;
   const Features features = renumbered(part.features, component.input_vertex);
   all.features.edges.insert(all.features.edges.end(), features.edges.begin(), features.edges.end());
   all.features.corners.insert(all.features.corners.end(), features.corners.begin(),

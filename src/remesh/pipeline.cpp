@@ -21,6 +21,7 @@
 #include "geometry/area_sampler.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
+#include "remesh/improve_shapes.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
 #include "sizing/size_field.hpp"
@@ -78,6 +79,20 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
   return traced;
 }
 
+// Per output vertex: whether it traces a feature (a corner, a curve seed, an end of a traced
+// feature edge), and must stay where it is.
+std::vector<bool> feature_vertices(const TriangleMesh& output, const std::map<Vec3, Index>& id,
+                                   const std::vector<Vec3>& seeds,
+                                   const SeedConstraints& constraints,
+                                   const std::vector<Edge>& feature_edges) {
+  std::vector<bool> on(output.vertices.size(), false);
+  for (std::size_t s = 0; s < constraints.kind.size(); ++s)
+    if (constraints.kind[s] != SeedConstraints::Kind::surface)
+      if (const auto it = id.find(seeds[s]); it != id.end()) on[it->second] = true;
+  for (const Edge& e : feature_edges) on[e[0]] = on[e[1]] = true;
+  return on;
+}
+
 // One output size at most; none only for initial seeds (their count is the size) or target
 // `count` random seeds: area-uniform, or with the density of the target lengths (paper §4.1).
 std::vector<Vec3> random_seeds(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
@@ -131,6 +146,8 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   if (settings.iterations < 0) throw InvalidArgument("the iteration cap must not be negative");
   if (settings.polish_rounds < 0)
     throw InvalidArgument("the number of polishing rounds must not be negative");
+  if (settings.shape_sweeps < 0)
+    throw InvalidArgument("the number of shape sweeps must not be negative");
   if (settings.topology_rounds < 0)
     throw InvalidArgument("the number of topology control rounds must not be negative");
   if (!(settings.gradient_tolerance > 0))
@@ -268,6 +285,13 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
     result.feature_edges_missing = wanted.size() - result.feature_edges.size();
   }
+  // Last, as it moves vertices off the seeds' positions (which the matching above needs).
+  const ShapeImprovement shapes = improve_shapes(
+      result.mesh, *projector,
+      feature_vertices(result.mesh, output_id, seeds, constraints, result.feature_edges),
+      result.feature_edges, settings.shape_sweeps);
+  result.shape_flips = shapes.flips;
+  result.shape_moves = shapes.moves;
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);

@@ -59,6 +59,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["gradient_norm_final"] = r.gradient_norm_final;
   j["defects_polished"] = r.defects_polished;
   j["polish_rounds"] = r.polish_rounds;
+  j["shape_flips"] = r.shape_flips;
+  j["shape_moves"] = r.shape_moves;
   j["time_s"] = total;
   j["timings"] = {{"initialization", r.seconds_initialization},
                   {"rcvt", r.seconds_rcvt},
@@ -88,9 +90,10 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
   text += fmt::format(
       "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
-      "triangles polished in {} rounds\n",
+      "triangles polished in {} rounds; {} edges flipped and {} vertices moved around badly "
+      "shaped triangles\n",
       r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
-      r.polish_rounds);
+      r.polish_rounds, r.shape_flips, r.shape_moves);
   if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
     text += fmt::format(
         "  topology  {} rounds of control: {} seeds added in split or non-disc cells, {} at "

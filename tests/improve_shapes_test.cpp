@@ -1,0 +1,167 @@
+// The output's last touch: flips and moves around badly shaped triangles make them better, and
+// never change the topology, the features, the boundary or the surface the mesh lies on.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+
+#include "cvtmesh/quality.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/topology.hpp"
+#include "geometry/surface_projector.hpp"
+#include "remesh/improve_shapes.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+bool has_edge(const TriangleMesh& mesh, Index a, Index b) {
+  return std::any_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) {
+    return std::count(t.begin(), t.end(), a) + std::count(t.begin(), t.end(), b) == 2;
+  });
+}
+
+// A flat pair split along its long diagonal a-b: angles of 16.7° at a and b.
+TriangleMesh flat_pair() {
+  return {{{-1, 0, 0}, {1, 0, 0}, {0, 0.3, 0}, {0, -0.3, 0}}, {{0, 1, 2}, {1, 0, 3}}};
+}
+
+TEST(ImproveShapes, FlipsTheLongDiagonalOfAFlatPair) {
+  TriangleMesh mesh = flat_pair();
+  const SurfaceProjector surface(mesh);
+  const ShapeImprovement done = improve_shapes(mesh, surface, {}, {}, 5);
+  EXPECT_EQ(done.flips, 1u);
+  EXPECT_TRUE(has_edge(mesh, 2, 3));
+  EXPECT_FALSE(has_edge(mesh, 0, 1));
+  EXPECT_NEAR(measure_quality(mesh).angle_min_deg, 2 * std::atan(0.3) * 180 / M_PI, 1e-9);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {  // still facing +z
+    const auto [a, b, c] = mesh.corners(t);
+    EXPECT_GT(cross(b - a, c - a).z, 0);
+  }
+  EXPECT_EQ(mesh.vertices, flat_pair().vertices);  // all on the boundary: none moves
+}
+
+TEST(ImproveShapes, NeverFlipsAFeatureEdge) {
+  TriangleMesh mesh = flat_pair();
+  const SurfaceProjector surface(mesh);
+  EXPECT_EQ(improve_shapes(mesh, surface, {}, {Edge{0, 1}}, 5).flips, 0u);
+  EXPECT_EQ(mesh.triangles, flat_pair().triangles);
+}
+
+// `mesh` with each vertex moved at random by up to `amount` along the unit sphere.
+TriangleMesh jittered_on_sphere(TriangleMesh mesh, double amount, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (Vec3& v : mesh.vertices) {
+    const Vec3 moved = v + Vec3{u(random), u(random), u(random)};
+    v = (1 / norm(moved)) * moved;
+  }
+  return mesh;
+}
+
+TEST(ImproveShapes, AJitteredSphereGetsBetterWithTheSameTopologyOnTheSurface) {
+  const TriangleMesh sphere = icosphere(5);
+  const SurfaceProjector surface(sphere);
+  TriangleMesh mesh = jittered_on_sphere(icosphere(3), 0.04, 7);  // edges about 0.1 long
+  const QualityReport before = measure_quality(mesh);
+  const TopologyReport topology = analyze_topology(mesh);
+  const ShapeImprovement done = improve_shapes(mesh, surface, {}, {}, 5);
+  const QualityReport after = measure_quality(mesh);
+  EXPECT_GT(done.moves, 0u);
+  EXPECT_GT(after.q_min, before.q_min + 0.1);
+  EXPECT_GT(after.angle_min_deg, before.angle_min_deg + 5);
+  EXPECT_TRUE(same_topology(analyze_topology(mesh), topology));
+  EXPECT_TRUE(analyze_topology(mesh).is_manifold());
+  for (const Vec3& v : mesh.vertices)  // on the fine sphere's facets, inside the unit sphere
+    EXPECT_NEAR(norm(v), 1.0, 2e-3);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {  // none folded over
+    const auto [a, b, c] = mesh.corners(t);
+    EXPECT_GT(dot(cross(b - a, c - a), a + b + c), 0);
+  }
+}
+
+TEST(ImproveShapes, FixedAndBoundaryVerticesStayWhereTheyAre) {
+  const TriangleMesh dome = hemisphere(24, 48);
+  const SurfaceProjector surface(dome);
+  TriangleMesh mesh = jittered_on_sphere(hemisphere(6, 12), 0.08, 3);
+  for (Vec3& v : mesh.vertices) v.z = std::max(v.z, 0.0);
+  std::vector<bool> fixed(mesh.vertices.size(), false);
+  for (Index v = 0; v < mesh.vertices.size(); v += 5) fixed[v] = true;
+  const TriangleMesh start = mesh;
+  const ShapeImprovement done = improve_shapes(mesh, surface, fixed, {}, 5);
+  EXPECT_GT(done.moves, 0u);
+  std::vector<bool> boundary(mesh.vertices.size(), false);
+  for (Index v = 0; v < mesh.vertices.size(); ++v)
+    boundary[v] = std::abs(start.vertices[v].z) < 1e-12;
+  for (Index v = 0; v < mesh.vertices.size(); ++v)
+    if (fixed[v] || boundary[v]) {
+      EXPECT_EQ(mesh.vertices[v], start.vertices[v]) << v;
+    }
+  EXPECT_TRUE(same_topology(analyze_topology(mesh), analyze_topology(start)));
+}
+
+// In a remesh, the last step mends what an unconverged tessellation leaves: a seed dragged most of
+// the way to its neighbour, with no optimization and no polishing after it.
+TEST(ImproveShapes, RemeshEndsWithItAndReportsIt) {
+  const TriangleMesh sphere = icosphere(4);
+  RemeshSettings s;
+  s.features.sharp_edges = false;
+  s.vertices = 800;
+  const TriangleMesh converged = remesh(sphere, s).mesh;
+  std::vector<Vec3> seeds = converged.vertices;
+  const Triangle& t = converged.triangles.front();
+  seeds[t[0]] = seeds[t[0]] + 0.8 * (seeds[t[1]] - seeds[t[0]]);
+  s.initial_seeds = seeds;
+  s.mode = CvtMode::ccvt;
+  s.iterations = 0;
+  s.polish_rounds = 0;
+  s.shape_sweeps = 0;
+  const RemeshResult without = remesh(sphere, s);
+  s.shape_sweeps = 5;
+  const RemeshResult with = remesh(sphere, s);
+  EXPECT_EQ(without.shape_moves + without.shape_flips, 0u);
+  EXPECT_GT(with.shape_moves, 0u);
+  EXPECT_LT(measure_quality(without.mesh).angle_min_deg, 30.0);
+  EXPECT_GE(measure_quality(with.mesh).angle_min_deg, 30.0);
+  EXPECT_TRUE(same_topology(analyze_topology(with.mesh), analyze_topology(sphere)));
+}
+
+// The paraboloid z = 1 - r² up to r = 1: its apex, then `rings` rings of `sectors` vertices, at
+// the angles `angle` gives (k from 0 to sectors - 1).
+TriangleMesh dome(int rings, int sectors, const std::function<double(int)>& angle) {
+  TriangleMesh mesh;
+  mesh.vertices.push_back({0, 0, 1});
+  for (int i = 1; i <= rings; ++i)
+    for (int k = 0; k < sectors; ++k) {
+      const double r = static_cast<double>(i) / rings, a = angle(k);
+      mesh.vertices.push_back({r * std::cos(a), r * std::sin(a), 1 - r * r});
+    }
+  const auto at = [&](int i, int k) {
+    return static_cast<Index>(1 + (i - 1) * sectors + k % sectors);
+  };
+  for (int k = 0; k < sectors; ++k) mesh.triangles.push_back({0, at(1, k), at(1, k + 1)});
+  for (int i = 1; i < rings; ++i)
+    for (int k = 0; k < sectors; ++k) {
+      mesh.triangles.push_back({at(i, k), at(i + 1, k), at(i + 1, k + 1)});
+      mesh.triangles.push_back({at(i, k), at(i + 1, k + 1), at(i, k + 1)});
+    }
+  return mesh;
+}
+
+// The apex of a coarse dome is a tip (its angles sum to 320°): its triangles are badly shaped (its
+// ring is bunched on one side), but moving it towards its neighbours would cut the tip off.
+TEST(ImproveShapes, TheTipOfADomeStays) {
+  const TriangleMesh surface = dome(40, 96, [](int k) { return 2 * M_PI * k / 96; });
+  const SurfaceProjector projector(surface);
+  TriangleMesh mesh = dome(2, 6, [](int k) { return 2 * M_PI * std::pow(k / 6.0, 1.5); });
+  EXPECT_LT(measure_quality(mesh).angle_min_deg, 35.0);
+  improve_shapes(mesh, projector, {}, {}, 5);
+  EXPECT_EQ(mesh.vertices[0], (Vec3{0, 0, 1}));
+}
+
+}  // namespace
+}  // namespace cvtmesh
