@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -85,6 +86,27 @@ TEST(Cli, QualityJsonHasEveryKeyWithTheMeshValues) {
   EXPECT_EQ(j["euler_characteristic"], 0);
   EXPECT_EQ(j["genus"], 1);
   EXPECT_FALSE(j.contains("hausdorff_max_pct"));
+}
+
+// Against a reference with a narrow angle between features (a flat kite whose boundary meets at
+// 20° at its tip, the tip split in two triangles of 10° there), the report states θmin away from
+// it and, at it, the smallest angle against the input angle (issue 18 item 6).
+TEST(Cli, QualityWithReferenceStatesTheQualityAwayFromNarrowAngles) {
+  TempDir dir;
+  const double s = std::sin(10 * M_PI / 180), c = std::cos(10 * M_PI / 180);
+  TriangleMesh kite;
+  kite.vertices = {{0, 0, 0}, {c, -s, 0}, {1, 0, 0}, {c, s, 0}, {1.2, 0, 0}};
+  kite.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}, {2, 4, 3}};
+  write_mesh(dir / "kite.off", kite);
+  const CliRun r = run_cli(dir, "quality --json " + quoted(dir / "kite.off") + " --ref " +
+                                    quoted(dir / "kite.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["narrow_input_angles"], 1);
+  EXPECT_EQ(j["triangles_at_narrow_angles"], 2);
+  EXPECT_NEAR(j["narrow_angle_ratio_min"].get<double>(), 0.5, 1e-9);
+  EXPECT_GT(j["angle_min_away_deg"].get<double>(), 10);
+  EXPECT_LT(j["angle_min_deg"].get<double>(), 10.0 + 1e-9);
 }
 
 TEST(Cli, QualityWithReferenceAddsHausdorffAndTopology) {
@@ -424,7 +446,8 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
        {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct", "same_topology",
         "iterations", "rvd_evaluations", "energy_initial", "energy_final", "gradient_norm_final",
         "defects_polished", "polish_rounds", "links_mended", "islands_seeded", "links_flipped",
-        "tips_closed", "mend_rounds", "time_s", "timings"})
+        "tips_closed", "mend_rounds", "shape_flips", "shape_moves", "angle_min_away_deg",
+        "narrow_input_angles", "narrow_angle_ratio_min", "time_s", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_EQ(j["mend_rounds"], 0);  // a sphere this well sampled needs no topology control

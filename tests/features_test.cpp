@@ -77,6 +77,13 @@ TEST(Features, NarrowestSectorIsTheAngleBetweenTwoFeaturesAtAVertex) {
   kite.vertices = {{0, 0, 0}, {c, -s, 0}, {1, 0, 0}, {c, s, 0}, {1.2, 0, 0}};
   kite.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}, {2, 4, 3}};
   EXPECT_NEAR(narrowest_feature_sector_deg(kite, detect_features(kite, {})), 20, 1e-9);
+  // Only the tip is under 30°, and it is where the kite's vertex 0 is.
+  const std::vector<NarrowAngle> narrow =
+      narrow_feature_angles(kite, detect_features(kite, {}), 30);
+  ASSERT_EQ(narrow.size(), 1u);
+  EXPECT_EQ(narrow[0].at, kite.vertices[0]);
+  EXPECT_NEAR(narrow[0].angle_deg, 20, 1e-9);
+  EXPECT_TRUE(narrow_feature_angles(kite, detect_features(kite, {}), 20).empty());
   // No vertex with two features: 360.
   const TriangleMesh ball = testing::icosphere(2);
   EXPECT_EQ(narrowest_feature_sector_deg(ball, detect_features(ball, {})), 360);

@@ -59,6 +59,16 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
 // bounds θmin: a sharp tip of a CAD part is as narrow in any faithful output.
 double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& features);
 
+// An input vertex where two feature curves meet at a narrow angle: any faithful output has
+// about that angle there (issue 18 item 6).
+struct NarrowAngle {
+  Vec3 at;
+  double angle_deg;  // the narrowest sector of the surface between two feature edges there
+};
+// The vertices whose narrowest sector between two feature edges is under `below_deg`.
+std::vector<NarrowAngle> narrow_feature_angles(const TriangleMesh& mesh, const Features& features,
+                                               double below_deg);
+
 // Reads a list of feature edges: one edge per line as two vertex ids (0-based, as in the mesh
 // file's vertex order), blank lines and lines starting with '#' ignored. InputError, naming
 // the file and line, for anything else.

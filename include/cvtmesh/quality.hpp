@@ -3,6 +3,7 @@
 
 #include <cstddef>
 
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
@@ -28,5 +29,21 @@ struct QualityReport {
 };
 
 QualityReport measure_quality(const TriangleMesh& mesh);
+
+// Input angles under this between two feature curves are narrow: no output that traces both
+// curves can have a larger angle there (issue 18 item 6).
+inline constexpr double kNarrowAngleDeg = 30;
+
+// The quality promise stated as quality meshers state it (Shewchuk's Triangle): over the
+// triangles away from the input's narrow angles, and at them, against the input angle.
+struct NarrowAngleQuality {
+  std::size_t narrow_angles = 0;  // input angles given
+  // Triangles with a vertex within half the mean edge length of a narrow angle: at it.
+  std::size_t triangles_at = 0;
+  double angle_min_away_deg = 0;  // θmin over the others (over all, when none is at one)
+  double ratio_at_min = 0;  // over those at one: smallest angle / the input angle; 0 when none
+};
+NarrowAngleQuality measure_away_from(const TriangleMesh& mesh,
+                                     const std::vector<NarrowAngle>& narrow);
 
 }  // namespace cvtmesh

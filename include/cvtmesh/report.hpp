@@ -25,8 +25,10 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
                             const TopologyReport& reference);
 
 // The full report of a mesh: counts, topology and quality, plus, against a reference, the
-// Hausdorff distance (when measured: `distance`, of `mesh` against `reference`) and the topology
-// comparison. JSON and text carry the same figures.
+// Hausdorff distance (when measured: `distance`, of `mesh` against `reference`), the topology
+// comparison, and the quality away from the reference's narrow angles between features
+// (`reference_features`, or those detect_features finds with its default settings). JSON and
+// text carry the same figures.
 struct MeshReport {
   TopologyReport topology;
   bool same_topology_as_reference = true;
@@ -36,7 +38,8 @@ struct MeshReport {
 // `reference_topology`: the reference's, when the caller has it already (else computed here).
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
                        const TriangleMesh* reference, const HausdorffReport* distance = nullptr,
-                       const TopologyReport* reference_topology = nullptr);
+                       const TopologyReport* reference_topology = nullptr,
+                       const Features* reference_features = nullptr);
 
 // Hausdorff samples per surface of a remesh's report (RemeshSettings::hausdorff), besides every
 // vertex of both meshes: the mean's sampling error is about 1% (0.0990% against 0.0986% with

@@ -46,9 +46,9 @@ double sector_from(const Features& f, std::span<const FanEntry> fan, const FanEn
   return -1;
 }
 
-}  // namespace
-
-double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& features) {
+// Per vertex with two feature edges or more, the narrowest sector between two of them, by vertex.
+std::vector<std::pair<Index, double>> narrowest_sectors(const TriangleMesh& mesh,
+                                                        const Features& features) {
   std::vector<int> degree(mesh.vertices.size(), 0);
   for (const Edge& e : features.edges) ++degree[e[0]], ++degree[e[1]];
   std::vector<FanEntry> fans;
@@ -61,8 +61,9 @@ double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& fe
     }
   std::sort(fans.begin(), fans.end(),
             [](const FanEntry& a, const FanEntry& b) { return a.apex < b.apex; });
-  double narrowest = 360;
+  std::vector<std::pair<Index, double>> out;
   for (auto first = fans.begin(); first != fans.end();) {
+    double narrowest = 360;
     const auto last =
         std::find_if(first, fans.end(), [&](const FanEntry& e) { return e.apex != first->apex; });
     // Each triangle at a feature edge starts a walk (both ways round, from each end); in a
@@ -74,9 +75,27 @@ double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& fe
           const double s = sector_from(features, fan, &e, start);
           if (s >= 0) narrowest = std::min(narrowest, s);
         }
+    if (narrowest < 360) out.push_back({first->apex, narrowest});
     first = last;
   }
+  return out;
+}
+
+}  // namespace
+
+double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& features) {
+  double narrowest = 360;
+  for (const auto& [v, angle] : narrowest_sectors(mesh, features))
+    narrowest = std::min(narrowest, angle);
   return narrowest;
+}
+
+std::vector<NarrowAngle> narrow_feature_angles(const TriangleMesh& mesh, const Features& features,
+                                               double below_deg) {
+  std::vector<NarrowAngle> out;
+  for (const auto& [v, angle] : narrowest_sectors(mesh, features))
+    if (angle < below_deg) out.push_back({mesh.vertices[v], angle});
+  return out;
 }
 
 }  // namespace cvtmesh

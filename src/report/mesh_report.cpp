@@ -84,9 +84,31 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
                  reference.euler_characteristic, self.boundary_loops, reference.boundary_loops);
 }
 
+namespace {
+
+void add_narrow_angle_json(nlohmann::ordered_json& j, const NarrowAngleQuality& n) {
+  j["narrow_input_angles"] = n.narrow_angles;
+  j["triangles_at_narrow_angles"] = n.triangles_at;
+  j["angle_min_away_deg"] = n.angle_min_away_deg;
+  j["narrow_angle_ratio_min"] =
+      n.triangles_at > 0 ? nlohmann::ordered_json(n.ratio_at_min) : nlohmann::ordered_json(nullptr);
+}
+
+std::string narrow_angle_line(const NarrowAngleQuality& n) {
+  if (n.narrow_angles == 0) return "";
+  return fmt::format(
+      "  narrow    {} input angle{} under {:.0f}° between features: θmin {:.2f}° away from them; "
+      "at them ({} triangles) the smallest angle is at least {:.2f} × the input angle\n",
+      n.narrow_angles, n.narrow_angles == 1 ? "" : "s", kNarrowAngleDeg, n.angle_min_away_deg,
+      n.triangles_at, n.ratio_at_min);
+}
+
+}  // namespace
+
 MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
                        const TriangleMesh* reference, const HausdorffReport* distance,
-                       const TopologyReport* reference_topology) {
+                       const TopologyReport* reference_topology,
+                       const Features* reference_features) {
   MeshReport r;
   r.topology = analyze_topology(mesh);
   const QualityReport quality = measure_quality(mesh);
@@ -98,6 +120,13 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
     r.same_topology_as_reference = same_topology(r.topology, ref_topology);
     add_reference_json(r.json, distance, ref_topology, r.same_topology_as_reference);
     r.text += hausdorff_lines(distance, r.topology, ref_topology);
+    const Features detected =
+        reference_features ? Features{} : detect_features(*reference, FeatureSettings{});
+    const NarrowAngleQuality narrow = measure_away_from(
+        mesh, narrow_feature_angles(*reference, reference_features ? *reference_features : detected,
+                                    kNarrowAngleDeg));
+    add_narrow_angle_json(r.json, narrow);
+    r.text += narrow_angle_line(narrow);
   }
   return r;
 }

@@ -18,8 +18,8 @@ nlohmann::ordered_json percent_or_null(double distance, double diagonal) {
 
 MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
                          const RemeshResult& r) {
-  MeshReport report =
-      report_mesh(name, r.mesh, &input, r.hausdorff ? &*r.hausdorff : nullptr, &r.input_topology);
+  MeshReport report = report_mesh(name, r.mesh, &input, r.hausdorff ? &*r.hausdorff : nullptr,
+                                  &r.input_topology, &r.features);
   const double diagonal = bounding_box(input).diagonal();
   const FeatureDistance fd = feature_distance(input, r.features.edges, r.mesh, r.feature_edges);
   const std::size_t corners_out = corners_kept(input, r.features, r.mesh);

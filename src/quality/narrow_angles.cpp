@@ -1,0 +1,48 @@
+// The quality promise as quality meshers state it (Shewchuk's Triangle; Cheng, Dey and
+// Shewchuk): bounds hold away from the input's narrow angles, and at one, relative to it.
+#include <algorithm>
+#include <limits>
+
+#include "cvtmesh/quality.hpp"
+#include "geometry/point_tree.hpp"
+
+namespace cvtmesh {
+
+NarrowAngleQuality measure_away_from(const TriangleMesh& mesh,
+                                     const std::vector<NarrowAngle>& narrow) {
+  NarrowAngleQuality out;
+  out.narrow_angles = narrow.size();
+  const QualityReport all = measure_quality(mesh);
+  out.angle_min_away_deg = all.angle_min_deg;
+  if (narrow.empty() || mesh.triangles.empty()) return out;
+  // A vertex within half an edge of a narrow angle stands for it: exactly there in an output
+  // that keeps its corners, the nearest vertex in one that does not.
+  const double radius = 0.5 * all.edge_length_mean;
+  const PointTree tree(mesh.vertices);
+  std::vector<double> angle_at(mesh.vertices.size(), 0);  // 0: at no narrow angle
+  std::vector<Index> near;
+  for (const NarrowAngle& a : narrow) {
+    tree.within(a.at, radius * radius, near);
+    for (Index v : near)
+      angle_at[v] = angle_at[v] == 0 ? a.angle_deg : std::min(angle_at[v], a.angle_deg);
+  }
+  double away = 180, ratio = std::numeric_limits<double>::infinity();
+  for (const Triangle& t : mesh.triangles) {
+    const double theta =
+        triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]).min_angle;
+    double input = 0;
+    for (Index v : t)
+      if (angle_at[v] > 0) input = input == 0 ? angle_at[v] : std::min(input, angle_at[v]);
+    if (input == 0) {
+      away = std::min(away, theta);
+    } else {
+      ++out.triangles_at;
+      ratio = std::min(ratio, theta / input);
+    }
+  }
+  out.angle_min_away_deg = away;
+  out.ratio_at_min = out.triangles_at > 0 ? ratio : 0;
+  return out;
+}
+
+}  // namespace cvtmesh
