@@ -98,8 +98,8 @@ TEST(Cli, QualityWithReferenceStatesTheQualityAwayFromNarrowAngles) {
   kite.vertices = {{0, 0, 0}, {c, -s, 0}, {1, 0, 0}, {c, s, 0}, {1.2, 0, 0}};
   kite.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 2}, {2, 4, 3}};
   write_mesh(dir / "kite.off", kite);
-  const CliRun r = run_cli(dir, "quality --json " + quoted(dir / "kite.off") + " --ref " +
-                                    quoted(dir / "kite.off"));
+  const CliRun r = run_cli(
+      dir, "quality --json " + quoted(dir / "kite.off") + " --ref " + quoted(dir / "kite.off"));
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["narrow_input_angles"], 1);
@@ -442,12 +442,29 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
   EXPECT_EQ(r.err, "");  // --quiet
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : kRequiredKeys) EXPECT_TRUE(j.contains(key)) << key;
-  for (const char* key :
-       {"hausdorff_max_pct", "hausdorff_mean_pct", "hausdorff_rms_pct", "same_topology",
-        "iterations", "rvd_evaluations", "energy_initial", "energy_final", "gradient_norm_final",
-        "defects_polished", "polish_rounds", "links_mended", "islands_seeded", "links_flipped",
-        "tips_closed", "mend_rounds", "shape_flips", "shape_moves", "angle_min_away_deg",
-        "narrow_input_angles", "narrow_angle_ratio_min", "time_s", "timings"})
+  for (const char* key : {"hausdorff_max_pct",
+                          "hausdorff_mean_pct",
+                          "hausdorff_rms_pct",
+                          "same_topology",
+                          "iterations",
+                          "rvd_evaluations",
+                          "energy_initial",
+                          "energy_final",
+                          "gradient_norm_final",
+                          "defects_polished",
+                          "polish_rounds",
+                          "links_mended",
+                          "islands_seeded",
+                          "links_flipped",
+                          "tips_closed",
+                          "mend_rounds",
+                          "shape_flips",
+                          "shape_moves",
+                          "angle_min_away_deg",
+                          "narrow_input_angles",
+                          "narrow_angle_ratio_min",
+                          "time_s",
+                          "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_EQ(j["mend_rounds"], 0);  // a sphere this well sampled needs no topology control
