@@ -99,11 +99,11 @@ class ShapeImprover {
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
       for (Index v : mesh_.triangles[t]) around_[v].push_back(t);
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
-      if (!fixed_[v] && !interior(v)) fixed_[v] = true;
-      start_gap_.push_back(gap_around(v));
       // A tip of the surface (a vertex whose triangles' angles fall far short of 360°, or
       // exceed it, at a saddle) stays: moved, it would uncover the tip.
-      if (std::abs(angle_defect(v)) > kTipDefectDeg) fixed_[v] = true;
+      if (!fixed_[v] && (!interior(v) || std::abs(angle_defect(v)) > kTipDefectDeg))
+        fixed_[v] = true;
+      start_gap_.push_back(fixed_[v] ? 0 : gap_around(v));  // only moves need it
     }
   }
 
