@@ -104,17 +104,18 @@ TEST(NarrowAngleQuality, SeparatesTrianglesAtNarrowInputAnglesFromTheRest) {
   mesh.vertices = {{0, 0, 0},  {1, 0, 0},  {c, s, 0},
                    {10, 0, 0}, {11, 0, 0}, {10.5, std::sqrt(0.75), 0}};
   mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
-  const NarrowAngleQuality at = measure_away_from(mesh, {{{0, 0, 0}, 20}});
+  const QualityReport quality = measure_quality(mesh);
+  const NarrowAngleQuality at = measure_away_from(mesh, quality, {{{0, 0, 0}, 20}});
   EXPECT_EQ(at.narrow_angles, 1u);
   EXPECT_EQ(at.triangles_at, 1u);
   EXPECT_NEAR(at.angle_min_away_deg, 60, 1e-9);
   EXPECT_NEAR(at.ratio_at_min, 0.5, 1e-9);
   // No narrow angle: every triangle is away, and θmin is the mesh's.
-  const NarrowAngleQuality none = measure_away_from(mesh, {});
+  const NarrowAngleQuality none = measure_away_from(mesh, quality, {});
   EXPECT_EQ(none.triangles_at, 0u);
   EXPECT_NEAR(none.angle_min_away_deg, 10, 1e-9);
   // A narrow angle far from every vertex (more than half an edge): nothing is at it.
-  EXPECT_EQ(measure_away_from(mesh, {{{5, 5, 0}, 20}}).triangles_at, 0u);
+  EXPECT_EQ(measure_away_from(mesh, quality, {{{5, 5, 0}, 20}}).triangles_at, 0u);
 }
 
 }  // namespace

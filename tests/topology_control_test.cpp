@@ -39,6 +39,20 @@ void expect_added_vertices_listed(const RemeshResult& r) {
   EXPECT_EQ(added.empty(), r.islands_seeded + r.seeds_refined + r.links_mended == 0);
 }
 
+// A manifold output with the input's components, Euler characteristic and boundary loops, and no
+// triangle removed by the last step.
+void expect_topology_kept(const RemeshResult& r, const TriangleMesh& input) {
+  const TopologyReport t = analyze_topology(r.mesh), in = analyze_topology(input);
+  EXPECT_TRUE(t.is_manifold()) << t.nonmanifold_edges << " non-manifold edges, "
+                               << t.nonmanifold_vertices << " vertices";
+  EXPECT_TRUE(same_topology(t, in))
+      << "components " << t.components << " vs " << in.components << ", χ "
+      << t.euler_characteristic << " vs " << in.euler_characteristic << ", loops "
+      << t.boundary_loops << " vs " << in.boundary_loops << "; " << r.triangles_removed
+      << " triangles removed";
+  EXPECT_EQ(r.triangles_removed, 0u);
+}
+
 // The box [-1,1]² × [-0.01,0.01]: a thin plate, closed.
 TriangleMesh thin_plate() {
   TriangleMesh m = cube(8);
@@ -420,22 +434,11 @@ TEST(TopologyControlSharedData, HandlesFarFinerThanTheSpacingAreKept) {
     RemeshSettings s;
     s.vertices = count;
     const RemeshResult r = remesh(femur, s);
-    const TopologyReport t = analyze_topology(r.mesh);
-    EXPECT_TRUE(t.is_manifold());
-    EXPECT_TRUE(same_topology(t, analyze_topology(femur)));
-    EXPECT_EQ(r.triangles_removed, 0u);
+    expect_topology_kept(r, femur);
     EXPECT_GT(r.islands_seeded + r.seeds_refined, 0u);
     expect_added_vertices_listed(r);
   }
 }
-
-}  // namespace
-}  // namespace cvtmesh
-
-namespace cvtmesh {
-namespace {
-
-using namespace cvtmesh::testing;
 
 TEST(TopologyControlSharedData, CreasesThatCostTheTopologyAreDroppedAndReported) {
   // ChineseDragon-10kv.off at 10k: its default creases (68 sharp edges in short curves, some
@@ -448,10 +451,7 @@ TEST(TopologyControlSharedData, CreasesThatCostTheTopologyAreDroppedAndReported)
   s.vertices = 10000;
   s.hausdorff.reset();
   const RemeshResult r = remesh(dragon, s);
-  const TopologyReport t = analyze_topology(r.mesh);
-  EXPECT_TRUE(t.is_manifold());
-  EXPECT_TRUE(same_topology(t, analyze_topology(dragon)));
-  EXPECT_EQ(r.triangles_removed, 0u);
+  expect_topology_kept(r, dragon);
   ASSERT_FALSE(r.feature_edges_dropped.empty());
   // What was dropped is sharp edges only: the boundary stays a feature, and none is both.
   FeatureSettings creases;
@@ -470,16 +470,8 @@ void expect_valid_remesh(const TriangleMesh& input, std::size_t vertices) {
   RemeshSettings s;
   s.vertices = vertices;
   const RemeshResult r = remesh(input, s);
-  const TopologyReport t = analyze_topology(r.mesh), in = analyze_topology(input);
-  EXPECT_TRUE(t.is_manifold()) << t.nonmanifold_edges << " non-manifold edges, "
-                               << t.nonmanifold_vertices << " vertices";
-  EXPECT_TRUE(t.consistently_oriented);
-  EXPECT_TRUE(same_topology(t, in))
-      << "components " << t.components << " vs " << in.components << ", χ "
-      << t.euler_characteristic << " vs " << in.euler_characteristic << ", loops "
-      << t.boundary_loops << " vs " << in.boundary_loops << "; " << r.triangles_removed
-      << " triangles removed";
-  EXPECT_EQ(r.triangles_removed, 0u);
+  expect_topology_kept(r, input);
+  EXPECT_TRUE(analyze_topology(r.mesh).consistently_oriented);
   expect_added_vertices_listed(r);
 }
 

@@ -43,7 +43,8 @@ struct NarrowAngleQuality {
   double angle_min_away_deg = 0;  // θmin over the others (over all, when none is at one)
   double ratio_at_min = 0;  // over those at one: smallest angle / the input angle; 0 when none
 };
-NarrowAngleQuality measure_away_from(const TriangleMesh& mesh,
+// `quality`: measure_quality(mesh), which callers have already.
+NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityReport& quality,
                                      const std::vector<NarrowAngle>& narrow);
 
 }  // namespace cvtmesh

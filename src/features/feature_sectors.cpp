@@ -1,11 +1,10 @@
 // The narrowest sector of the surface between two feature edges at a vertex: a bound on the
 // smallest angle of any output that traces both (paper §5's θmin, on CAD parts).
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <span>
 
 #include "cvtmesh/features.hpp"
+#include "geometry/angle.hpp"
 
 namespace cvtmesh {
 
@@ -16,10 +15,6 @@ struct FanEntry {
   Index apex, x, y;
   double angle_deg;
 };
-
-double angle_deg(const Vec3& u, const Vec3& v) {
-  return 180 / std::numbers::pi * std::atan2(norm(cross(u, v)), dot(u, v));
-}
 
 bool is_feature(const Features& f, Index a, Index b) {
   return std::binary_search(f.edges.begin(), f.edges.end(), a < b ? Edge{a, b} : Edge{b, a});

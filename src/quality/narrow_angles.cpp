@@ -8,16 +8,15 @@
 
 namespace cvtmesh {
 
-NarrowAngleQuality measure_away_from(const TriangleMesh& mesh,
+NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityReport& quality,
                                      const std::vector<NarrowAngle>& narrow) {
   NarrowAngleQuality out;
   out.narrow_angles = narrow.size();
-  const QualityReport all = measure_quality(mesh);
-  out.angle_min_away_deg = all.angle_min_deg;
+  out.angle_min_away_deg = quality.angle_min_deg;
   if (narrow.empty() || mesh.triangles.empty()) return out;
   // A vertex within half an edge of a narrow angle stands for it: exactly there in an output
   // that keeps its corners, the nearest vertex in one that does not.
-  const double radius = 0.5 * all.edge_length_mean;
+  const double radius = 0.5 * quality.edge_length_mean;
   const PointTree tree(mesh.vertices);
   std::vector<double> angle_at(mesh.vertices.size(), 0);  // 0: at no narrow angle
   std::vector<Index> near;

@@ -1,22 +1,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "cvtmesh/quality.hpp"
+#include "geometry/angle.hpp"
 
 namespace cvtmesh {
-
-namespace {
-
-constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-// Angle between u and v in degrees; atan2 stays accurate for angles near 0° and 180°.
-double angle_between(const Vec3& u, const Vec3& v) {
-  return kDegrees * std::atan2(norm(cross(u, v)), dot(u, v));
-}
-
-}  // namespace
 
 TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double la = distance(b, c), lb = distance(c, a), lc = distance(a, b);
@@ -26,9 +15,9 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double longest = std::max({la, lb, lc});
   // Paper §5: Q_t = 6/√3 · A/(p·h).
   const double q = 6.0 / std::sqrt(3.0) * area / (half_perimeter * longest);
-  const double alpha = angle_between(b - a, c - a);
-  const double beta = angle_between(a - b, c - b);
-  const double gamma = angle_between(a - c, b - c);
+  const double alpha = angle_deg(b - a, c - a);
+  const double beta = angle_deg(a - b, c - b);
+  const double gamma = angle_deg(a - c, b - c);
   return {q, std::min({alpha, beta, gamma}), std::max({alpha, beta, gamma})};
 }
 

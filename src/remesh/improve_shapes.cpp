@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "cvtmesh/quality.hpp"
+#include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 
 namespace cvtmesh {
@@ -179,10 +180,9 @@ class ShapeImprover {
       const Triangle& f = mesh_.triangles[t];
       const int i = slot(f, v);
       const Vec3& p = mesh_.vertices[v];
-      const Vec3 a = mesh_.vertices[f[(i + 1) % 3]] - p, b = mesh_.vertices[f[(i + 2) % 3]] - p;
-      sum += std::atan2(norm(cross(a, b)), dot(a, b));
+      sum += angle_deg(mesh_.vertices[f[(i + 1) % 3]] - p, mesh_.vertices[f[(i + 2) % 3]] - p);
     }
-    return 360 - sum * 180 / M_PI;
+    return 360 - sum;
   }
 
   // How far the surface is from the triangles at `v` (their centroids), at most.

@@ -123,8 +123,9 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
     const Features detected =
         reference_features ? Features{} : detect_features(*reference, FeatureSettings{});
     const NarrowAngleQuality narrow = measure_away_from(
-        mesh, narrow_feature_angles(*reference, reference_features ? *reference_features : detected,
-                                    kNarrowAngleDeg));
+        mesh, quality,
+        narrow_feature_angles(*reference, reference_features ? *reference_features : detected,
+                              kNarrowAngleDeg));
     add_narrow_angle_json(r.json, narrow);
     r.text += narrow_angle_line(narrow);
   }
