@@ -10,6 +10,8 @@
 //     on the file's order (stored_s), on the shuffled copy (shuffled_s), and on the shuffled copy
 //     sorted by spatially_sorted, the sort included (sorted_s); sorted_over_stored is the
 //     order-independence figure (issue 19: at most 1.15).
+//   BM_RvdCoarseInput/N: a cube of 12 triangles, N random seeds, each triangle thousands of cells
+//     wide (issue 19: coarse inputs cost what their cells cost); rvd_over_delaunay as above.
 //   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
 //     compares to random seeds on the same mesh (exact_fallback_pct, ties).
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -131,6 +133,18 @@ void BM_RvdShuffledInput(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RvdShuffledInput)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_RvdCoarseInput(benchmark::State& state) {
+  const TriangleMesh mesh = testing::cube(1);
+  const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
+  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+}
+BENCHMARK(BM_RvdCoarseInput)
+    ->Arg(5'000)
+    ->Arg(50'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 void BM_RvdDegenerate(benchmark::State& state) {
   const TriangleMesh mesh = testing::cube(40);  // 19,200 faces, 9,602 grid vertices

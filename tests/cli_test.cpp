@@ -295,8 +295,9 @@ TEST(CliRvd, JsonReportTilesTheSurface) {
   const CliRun r = run_cli(dir, "rvd --json --seeds 500 " + quoted(dir / "torus.off"));
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"seeds", "triangles", "polygons", "surface_area", "cells_area_sum",
-                          "energy", "exact_fallbacks", "radius_searches", "threads", "timings"})
+  for (const char* key :
+       {"seeds", "triangles", "polygons", "surface_area", "cells_area_sum", "energy",
+        "exact_fallbacks", "radius_searches", "cells_clipped", "threads", "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
   for (const char* key : {"sampling", "kdtree", "neighbors", "rvd", "total"})
     EXPECT_TRUE(j["timings"].contains(key)) << key;

@@ -109,6 +109,7 @@ int run_rvd(const RvdOptions& o) {
     j["seeds"] = rvd.seeds().size();
     j["triangles"] = mesh.triangles.size();
     j["polygons"] = stats.polygons;
+    j["cells_clipped"] = stats.cells_clipped;
     j["surface_area"] = area;
     j["cells_area_sum"] = cells_area;
     j["area_relative_difference"] = relative_difference;

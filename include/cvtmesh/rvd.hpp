@@ -50,6 +50,7 @@ class PolygonSink {
 
 struct TraversalStats {
   std::size_t polygons = 0;
+  std::size_t cells_clipped = 0;    // (cell, triangle) clippings, polygons and empty ones alike
   std::size_t predicates = 0;       // side-of-bisector decisions
   std::size_t exact_fallbacks = 0;  // decisions the floating-point filter left to exact arithmetic
   std::size_t perturbed_ties = 0;   // exact ties decided by the symbolic perturbation

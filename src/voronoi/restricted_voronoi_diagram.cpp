@@ -1,7 +1,7 @@
 // The RVD traversal (paper §3.1-3.3): first the cell of each input vertex, exactly; then per
 // input triangle, whole if its corners share a cell, else a FIFO queue of cells starting from
 // its first corner's; each cell clips the triangle by the bisectors within the security
-// radius, and a seed whose bisector actually cut the polygon joins the queue.
+// radius, and the seeds across the clipped polygon's edges join the queue.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -40,7 +40,7 @@ struct Scratch {
   std::deque<Index> queue;
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
-  std::size_t polygons = 0;
+  std::size_t polygons = 0, cells_clipped = 0;
   std::vector<Index> spare;  // candidates from a radius search (Impl::for_candidates)
   std::size_t radius_searches = 0;
 };
@@ -195,6 +195,7 @@ struct RestrictedVoronoiDiagram::Impl {
     if (owners[corners[1]] == start && owners[corners[2]] == start) {
       // Cells are convex: a triangle whose corners lie in one cell lies in it whole.
       frame.cell = start;
+      ++s.cells_clipped;
       s.polygon.clear();
       for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
       ++s.polygons;
@@ -209,6 +210,7 @@ struct RestrictedVoronoiDiagram::Impl {
       const Index i = s.queue.front();
       s.queue.pop_front();
       frame.cell = i;
+      ++s.cells_clipped;
       s.polygon.clear();
       for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
       double reach2 = reach(seeds[i], s.polygon);
@@ -217,16 +219,22 @@ struct RestrictedVoronoiDiagram::Impl {
           i, s, [&] { return reach2; },
           [&](Index j) {
             if (beyond_bisector(ball, seeds[i], seeds[j]) || !clip(frame, j, s)) return true;
-            if (s.stamp[j] != stamp) {
-              s.stamp[j] = stamp;
-              s.queue.push_back(j);
-            }
             if (s.polygon.empty()) return false;
             reach2 = reach(seeds[i], s.polygon);
             ball = bounding_ball(s.polygon);
             return true;
           });
       if (s.polygon.size() < 3) continue;
+      // Only the seeds across the final polygon's edges have cells on this triangle: every
+      // bisector symbol of a vertex names the seed across one of its two edges. (A seed whose
+      // bisector cut an earlier, larger polygon may own nothing here; queueing it would clip
+      // the whole triangle again, and on a coarse input that is thousands of cells wide.)
+      for (const RvdVertex& v : s.polygon)
+        for (const std::int32_t j : v.symbols)
+          if (j >= 0 && s.stamp[static_cast<Index>(j)] != stamp) {
+            s.stamp[static_cast<Index>(j)] = stamp;
+            s.queue.push_back(static_cast<Index>(j));
+          }
       ++s.polygons;
       const RvdPolygon polygon{i, static_cast<Index>(t), s.polygon};
       for (PolygonSink* sink : sinks) sink->polygon(chunk, polygon);
@@ -301,6 +309,7 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
   TraversalStats stats;
   for (const Scratch& s : scratch) {
     stats.polygons += s.polygons;
+    stats.cells_clipped += s.cells_clipped;
     stats.predicates += s.counters.predicates;
     stats.exact_fallbacks += s.counters.exact_fallbacks;
     stats.perturbed_ties += s.counters.perturbed_ties;
