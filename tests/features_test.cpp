@@ -150,6 +150,27 @@ TEST(Features, JaggedFoldsAreNoCreasesAtTheOutputScaleButFlatSidedCreasesAre) {
   EXPECT_EQ(detect_features(half, s).edges.size(), 12u);  // the 12 boundary edges
 }
 
+// A cube (side 2, 8 grid cells a side) with a ridge on its top face: 5 grid vertices in a row
+// raised by a grid cell. The ridge folds by 90° and, with a grid diagonal at each end, is 1.87
+// long; it ends in the flat face, meeting no other feature.
+TriangleMesh cube_with_ridge() {
+  TriangleMesh m = testing::cube(8);
+  for (Vec3& p : m.vertices)
+    if (p.z == 1 && p.y == 0 && std::abs(p.x) < 0.51) p.z += 0.25;
+  return m;
+}
+
+TEST(Features, ShortCreasesFreeAtBothEndsAreDroppedUnlessForced) {
+  FeatureSettings s;
+  s.scale = 0.25;  // the ridge is 7.5 times that: no crease at this scale
+  EXPECT_EQ(detect_features(cube_with_ridge(), s).curves.size(), 12u);  // the cube's stay
+  s.scale = 0.2;                                                        // 9.4 times: kept
+  EXPECT_EQ(detect_features(cube_with_ridge(), s).curves.size(), 13u);
+  s.scale = 0.25;
+  s.creases_at_scale = false;  // a feature angle given: every curve of its length is kept
+  EXPECT_EQ(detect_features(cube_with_ridge(), s).curves.size(), 13u);
+}
+
 TEST(Features, FeatureEdgeFileIsReadWithCommentsAndCheckedLineByLine) {
   const testing::TempDir dir;
   const auto good = dir.path() / "edges.txt";

@@ -23,10 +23,12 @@ struct FeatureSettings {
   // scale: when shorter than twice it (details below the output's resolution, noise on scans),
   // and, with `creases_at_scale`, when they do not fold by `angle_deg` between sides that are
   // flat within this distance (a jagged fold of a coarse organic model or a noisy scan, whose
-  // tracing costs angles and topology; CAD creases have flat or gently curved sides). remesh
-  // sets it to its target edge length.
+  // tracing costs angles and topology; CAD creases have flat or gently curved sides), or when
+  // free at both ends (meeting no other feature) and shorter than 8 times it (a fold of an
+  // organic model's polygons; CAD creases end where they meet other creases). remesh sets it to
+  // its target edge length.
   double scale = 0;
-  bool creases_at_scale = true;  // the CLI turns it off when --feature-angle is given
+  bool creases_at_scale = true;  // both tests after the length; off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.
   std::vector<Edge> user_edges;
   // More corners, chosen by the user (vertex ids): each becomes an output vertex at exactly its

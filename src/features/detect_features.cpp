@@ -120,6 +120,15 @@ double curve_length(const TriangleMesh& mesh, const FeatureCurve& c) {
   return length;
 }
 
+// A crease free at both ends (it rises out of a smooth surface and dies back into it, meeting no
+// other feature) is kept only if at least this many output edge lengths long. On the 57 meshes
+// of ../shared/data and its corpus, the creases of CAD parts end at corners where they meet other
+// creases or boundaries, and the one free crease among them is 72 edge lengths long
+// (couplingdown.off at 5k); the free creases of organic models are folds of their polygons, 2 to
+// 10 long, whose tracing cost angles (issue 18 item 5: bull.off at 5k 29° against 34° without
+// features, plane_holes.obj Qmin 0.41 against 0.52, triceratops.off at 1k 16° against 23°).
+constexpr double kFreeCreaseLengths = 8;
+
 }  // namespace
 
 Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settings) {
@@ -173,9 +182,15 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     // Curves of sharp edges only that are no features at the output's scale go, and the rest is
     // chained again: a corner of a dropped curve may be an ordinary curve vertex now.
     const CreaseScale creases(mesh, uses, f.edges);
+    const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
+    auto free_ends = [&](const FeatureCurve& c) {
+      return !c.closed && adj.degree(c.vertices.front()) == 1 && adj.degree(c.vertices.back()) == 1;
+    };
     auto feature_at_scale = [&](const FeatureCurve& c) {
-      return curve_length(mesh, c) >= 2 * settings.scale &&
-             (!settings.creases_at_scale ||
+      const double length = curve_length(mesh, c);
+      if (length < 2 * settings.scale) return false;
+      return !settings.creases_at_scale ||
+             ((!free_ends(c) || length >= kFreeCreaseLengths * settings.scale) &&
               creases.is_crease(c, settings.scale, settings.angle_deg));
     };
     std::vector<Edge> dropped;
