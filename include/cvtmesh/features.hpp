@@ -25,8 +25,9 @@ struct FeatureSettings {
   // flat within this distance (a jagged fold of a coarse organic model or a noisy scan, whose
   // tracing costs angles and topology; CAD creases have flat or gently curved sides), or when
   // free at both ends (meeting no other feature) and shorter than 8 times it (a fold of an
-  // organic model's polygons; CAD creases end where they meet other creases). remesh sets it to
-  // its target edge length.
+  // organic model's polygons; CAD creases end where they meet other creases), or when another
+  // curve joins the same two corners within half of it all along (twins: one is kept, the
+  // shorter). remesh sets it to its target edge length.
   double scale = 0;
   bool creases_at_scale = true;  // both tests after the length; off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.

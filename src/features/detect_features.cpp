@@ -9,6 +9,7 @@
 #include "cvtmesh/features.hpp"
 #include "features/crease_at_scale.hpp"
 #include "features/edge_uses.hpp"
+#include "features/twin_curves.hpp"
 
 namespace cvtmesh {
 
@@ -193,16 +194,27 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
              ((!free_ends(c) || length >= kFreeCreaseLengths * settings.scale) &&
               creases.is_crease(c, settings.scale, settings.angle_deg));
     };
-    std::vector<Edge> dropped;
-    for (const FeatureCurve& c : f.curves) {
+    const auto edges_of = [](const FeatureCurve& c) {
       std::vector<Edge> edges;
       for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
         edges.push_back(edge_of(c.vertices[k], c.vertices[k + 1]));
       if (c.closed) edges.push_back(edge_of(c.vertices.back(), c.vertices[0]));
-      if (std::all_of(edges.begin(), edges.end(), [&](const Edge& e) { return sharp_only(e); }) &&
-          !feature_at_scale(c))
-        dropped.insert(dropped.end(), edges.begin(), edges.end());
+      return edges;
+    };
+    std::vector<bool> droppable;  // per curve: of sharp edges only
+    for (const FeatureCurve& c : f.curves) {
+      const std::vector<Edge> edges = edges_of(c);
+      droppable.push_back(std::all_of(edges.begin(), edges.end(), sharp_only));
     }
+    const std::vector<bool> twin = settings.creases_at_scale
+                                       ? twin_curves(mesh, f.curves, droppable, settings.scale)
+                                       : std::vector<bool>(f.curves.size(), false);
+    std::vector<Edge> dropped;
+    for (std::size_t c = 0; c < f.curves.size(); ++c)
+      if (droppable[c] && (twin[c] || !feature_at_scale(f.curves[c]))) {
+        const std::vector<Edge> edges = edges_of(f.curves[c]);
+        dropped.insert(dropped.end(), edges.begin(), edges.end());
+      }
     if (!dropped.empty()) {
       std::sort(dropped.begin(), dropped.end());
       std::erase_if(f.edges, [&](const Edge& e) {
