@@ -29,7 +29,7 @@ struct FeatureSettings {
   // curve joins the same two corners within half of it all along (twins: one is kept, the
   // shorter). remesh sets it to its target edge length.
   double scale = 0;
-  bool creases_at_scale = true;  // both tests after the length; off when --feature-angle is given
+  bool creases_at_scale = true;  // all but the length rule; off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.
   std::vector<Edge> user_edges;
   // More corners, chosen by the user (vertex ids): each becomes an output vertex at exactly its
