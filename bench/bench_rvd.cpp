@@ -76,10 +76,14 @@ void report(benchmark::State& state, const Pass& p) {
   state.counters["radius_searches"] = static_cast<double>(p.stats.radius_searches);
 }
 
-void BM_RvdVsDelaunay(benchmark::State& state) {
-  const TriangleMesh mesh = testing::icosphere(4);
+// RVD against Delaunay with state.range(0) random seeds on `mesh`.
+void random_seeds_pass(benchmark::State& state, const TriangleMesh& mesh) {
   const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
   for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+}
+
+void BM_RvdVsDelaunay(benchmark::State& state) {
+  random_seeds_pass(state, testing::icosphere(4));
 }
 BENCHMARK(BM_RvdVsDelaunay)
     ->Arg(1'000)
@@ -135,9 +139,7 @@ void BM_RvdShuffledInput(benchmark::State& state) {
 BENCHMARK(BM_RvdShuffledInput)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_RvdCoarseInput(benchmark::State& state) {
-  const TriangleMesh mesh = testing::cube(1);
-  const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
-  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+  random_seeds_pass(state, testing::cube(1));
 }
 BENCHMARK(BM_RvdCoarseInput)
     ->Arg(5'000)

@@ -177,16 +177,17 @@ TEST(Features, TwinCurvesGoForTheShorterOrTheOneThatMustStay) {
   m.vertices = {{0, 0, 0}, {1, 0.1, 0}, {2, 0, 0}, {1, -0.4, 0}};
   const std::vector<FeatureCurve> curves = {
       {{0, 1, 2}, false}, {{0, 2}, false}, {{0, 3, 2}, false}};
+  const std::vector<double> lengths = {2 * std::hypot(1, 0.1), 2, 2 * std::hypot(1, 0.4)};
   // At 0.1 the bent curve is 0.1 off the straight one, under half of 0.5: it goes, the
   // straight one stays; the third is 0.4 off and stays.
-  EXPECT_EQ(twin_curves(m, curves, {true, true, true}, 0.5),
+  EXPECT_EQ(twin_curves(m, curves, lengths, {true, true, true}, 0.5),
             (std::vector<bool>{true, false, false}));
-  EXPECT_EQ(twin_curves(m, curves, {true, true, true}, 1.0),  // 0.4 is under half of 1 too
+  EXPECT_EQ(twin_curves(m, curves, lengths, {true, true, true}, 1.0),  // 0.4 is under half of 1 too
             (std::vector<bool>{true, false, true}));
   // A curve that must stay (a boundary) keeps its twin's place whatever the lengths.
-  EXPECT_EQ(twin_curves(m, curves, {false, true, false}, 0.5),
+  EXPECT_EQ(twin_curves(m, curves, lengths, {false, true, false}, 0.5),
             (std::vector<bool>{false, true, false}));
-  EXPECT_EQ(twin_curves(m, curves, {true, true, true}, 0.1),  // resolved at that scale
+  EXPECT_EQ(twin_curves(m, curves, lengths, {true, true, true}, 0.1),  // resolved at that scale
             (std::vector<bool>{false, false, false}));
 }
 

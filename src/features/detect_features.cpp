@@ -187,12 +187,14 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     auto free_ends = [&](const FeatureCurve& c) {
       return !c.closed && adj.degree(c.vertices.front()) == 1 && adj.degree(c.vertices.back()) == 1;
     };
-    auto feature_at_scale = [&](const FeatureCurve& c) {
-      const double length = curve_length(mesh, c);
+    std::vector<double> lengths;
+    for (const FeatureCurve& c : f.curves) lengths.push_back(curve_length(mesh, c));
+    auto feature_at_scale = [&](std::size_t c) {
+      const double length = lengths[c];
       if (length < 2 * settings.scale) return false;
       return !settings.creases_at_scale ||
-             ((!free_ends(c) || length >= kFreeCreaseLengths * settings.scale) &&
-              creases.is_crease(c, settings.scale, settings.angle_deg));
+             ((!free_ends(f.curves[c]) || length >= kFreeCreaseLengths * settings.scale) &&
+              creases.is_crease(f.curves[c], settings.scale, settings.angle_deg));
     };
     const auto edges_of = [](const FeatureCurve& c) {
       std::vector<Edge> edges;
@@ -206,12 +208,12 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       const std::vector<Edge> edges = edges_of(c);
       droppable.push_back(std::all_of(edges.begin(), edges.end(), sharp_only));
     }
-    const std::vector<bool> twin = settings.creases_at_scale
-                                       ? twin_curves(mesh, f.curves, droppable, settings.scale)
-                                       : std::vector<bool>(f.curves.size(), false);
+    const std::vector<bool> twin =
+        settings.creases_at_scale ? twin_curves(mesh, f.curves, lengths, droppable, settings.scale)
+                                  : std::vector<bool>(f.curves.size(), false);
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
-      if (droppable[c] && (twin[c] || !feature_at_scale(f.curves[c]))) {
+      if (droppable[c] && (twin[c] || !feature_at_scale(c))) {
         const std::vector<Edge> edges = edges_of(f.curves[c]);
         dropped.insert(dropped.end(), edges.begin(), edges.end());
       }

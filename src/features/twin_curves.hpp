@@ -13,9 +13,10 @@
 
 namespace cvtmesh {
 
-// Per curve of `curves`: whether it goes as the twin of another. Only curves flagged in
-// `droppable` go; of two droppable twins, the longer (on a tie, the later one).
+// Per curve of `curves` (`lengths`: theirs): whether it goes as the twin of another. Only curves
+// flagged in `droppable` go; of two droppable twins, the longer (on a tie, the later one).
 std::vector<bool> twin_curves(const TriangleMesh& mesh, const std::vector<FeatureCurve>& curves,
+                              const std::vector<double>& lengths,
                               const std::vector<bool>& droppable, double scale);
 
 }  // namespace cvtmesh

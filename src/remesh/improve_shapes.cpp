@@ -1,5 +1,7 @@
 #include "remesh/improve_shapes.hpp"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,6 +15,8 @@
 namespace cvtmesh {
 
 namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 // A little above what a converged CVT gives on a smooth surface (θmin about 35-38°, Q about
 // 0.65): below it, a triangle is worth improving; changes stop where they no longer help.
@@ -58,28 +62,11 @@ std::optional<Vec3> unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
   return unit(cross(b - a, c - a));
 }
 
-// The distance from p to triangle abc (the closest point by the triangle's Voronoi regions,
-// as in Ericson's Real-Time Collision Detection, §5.1.5).
 double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return distance(p, a);
-  const Vec3 bp = p - b;
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return distance(p, b);
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return distance(p, c);
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return distance(p, a + (d1 / (d1 - d3)) * ab);
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return distance(p, a + (d2 / (d2 - d6)) * ac);
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return distance(p, b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
-  const double denominator = va + vb + vc;
-  if (!(denominator > 0)) return distance(p, a);
-  return distance(p, a + (vb / denominator) * ab + (vc / denominator) * ac);
+  using Point = Kernel::Point_3;
+  return std::sqrt(CGAL::squared_distance(
+      Point(p.x, p.y, p.z),
+      Kernel::Triangle_3(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z))));
 }
 
 // Where vertex `v` sits in triangle `t`: 0, 1 or 2.
