@@ -458,6 +458,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "islands_seeded",
                           "links_flipped",
                           "tips_closed",
+                          "flat_ears_removed",
                           "mend_rounds",
                           "shape_flips",
                           "shape_moves",

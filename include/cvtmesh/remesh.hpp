@@ -125,6 +125,10 @@ struct RemeshResult {
   // edges and vertices, folds), so that the output is always an oriented manifold. Each leaves
   // a hole: when this is not 0 the output's topology differs from the input's.
   std::size_t triangles_removed = 0;
+  // Flat ears removed at the boundary (remesh/flat_ears): triangles whose two edges at one
+  // vertex, not a corner, were boundary edges meeting at 160° or more. The boundary loop stays;
+  // the vertex goes, and the links from it to its two neighbours count as missing.
+  std::size_t flat_ears_removed = 0;
   // The output's last touch, after all the above: edges flipped between nearly coplanar
   // triangles and vertices moved along the surface, around badly shaped triangles, each only
   // where the worst triangle it touches gets better. Neither changes the topology; feature,

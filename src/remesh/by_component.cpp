@@ -271,6 +271,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.tips_closed += part.tips_closed;
   all.mend_rounds = std::max(all.mend_rounds, part.mend_rounds);
   all.triangles_removed += part.triangles_removed;
+  all.flat_ears_removed += part.flat_ears_removed;
   all.time_limit_reached |= part.time_limit_reached;
 }
 

@@ -21,6 +21,7 @@
 #include "geometry/area_sampler.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
+#include "remesh/flat_ears.hpp"
 #include "remesh/improve_shapes.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
@@ -272,6 +273,10 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   // a manifold input: a non-manifold input edge is a feature the output keeps (issue 18).
   if (result.input_topology.is_manifold())
     result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
+  // The mesh's first vertices are the seeds, by id (PolishedOutput).
+  std::vector<bool> corners(result.mesh.vertices.size(), false);
+  for (const Index s : constraints.corner_seed) corners[s] = true;
+  result.flat_ears_removed = remove_flat_ears(result.mesh, corners);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   const std::map<Vec3, Index> output_id = vertex_ids(result.mesh);
   result.vertices_added =

@@ -41,6 +41,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["islands_seeded"] = r.islands_seeded;
   j["seeds_refined"] = r.seeds_refined;
   j["triangles_removed"] = r.triangles_removed;
+  j["flat_ears_removed"] = r.flat_ears_removed;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
   j["vertices_added"] = r.vertices_added;
   j["links_flipped"] = r.links_flipped;
@@ -94,6 +95,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
       "shaped triangles\n",
       r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
       r.polish_rounds, r.shape_flips, r.shape_moves);
+  if (r.flat_ears_removed > 0)
+    text += fmt::format(
+        "  boundary  {} flat ears removed (a boundary vertex whose one triangle "
+        "was flat)\n",
+        r.flat_ears_removed);
   if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
     text += fmt::format(
         "  topology  {} rounds of control: {} seeds added in split or non-disc cells, {} at "

@@ -1,0 +1,73 @@
+#include "remesh/flat_ears.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace cvtmesh {
+
+namespace {
+
+// cos 160°: an angle at least this wide has a cosine at most this.
+const double kFlatEarCos = std::cos(160 * M_PI / 180);
+
+using EdgeUses = std::map<Edge, int>;
+
+Edge key(Index a, Index b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+void count(EdgeUses& uses, const Triangle& t, int by) {
+  for (int k = 0; k < 3; ++k) uses[key(t[k], t[(k + 1) % 3])] += by;
+}
+
+// The corner of `t` that is a flat ear's vertex, or -1. `triangles_at`: per vertex, the
+// triangles that use it (an ear's vertex has no other: where it has, it is a pinch of two
+// fans, which an ear's removal would change).
+int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeUses& uses,
+                    const std::vector<int>& triangles_at, const std::vector<bool>& kept) {
+  for (int k = 0; k < 3; ++k) {
+    const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+    if (kept[a] || triangles_at[a] != 1) continue;
+    if (uses.at(key(a, b)) != 1 || uses.at(key(a, c)) != 1) continue;
+    // The third edge must be an interior edge: a triangle alone is a component, not an ear.
+    if (uses.at(key(b, c)) != 2) continue;
+    const Vec3 u = mesh.vertices[b] - mesh.vertices[a], v = mesh.vertices[c] - mesh.vertices[a];
+    const double lengths = norm(u) * norm(v);
+    if (lengths > 0 && dot(u, v) <= kFlatEarCos * lengths) return k;
+  }
+  return -1;
+}
+
+}  // namespace
+
+std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept) {
+  EdgeUses uses;
+  std::vector<int> triangles_at(mesh.vertices.size(), 0);
+  for (const Triangle& t : mesh.triangles) {
+    count(uses, t, 1);
+    for (const Index v : t) ++triangles_at[v];
+  }
+  std::vector<bool> removed(mesh.triangles.size(), false);
+  std::size_t ears = 0;
+  // A removal can make an ear of the triangle across the chord: sweep again until none is found.
+  for (bool found = true; found;) {
+    found = false;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      if (removed[i] || flat_ear_corner(mesh, mesh.triangles[i], uses, triangles_at, kept) < 0)
+        continue;
+      count(uses, mesh.triangles[i], -1);
+      for (const Index v : mesh.triangles[i]) --triangles_at[v];
+      removed[i] = true;
+      ++ears;
+      found = true;
+    }
+  }
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+    if (!removed[i]) mesh.triangles[next++] = mesh.triangles[i];
+  mesh.triangles.resize(next);
+  return ears;
+}
+
+}  // namespace cvtmesh

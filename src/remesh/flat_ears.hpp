@@ -1,0 +1,24 @@
+// Flat ears at the output's boundary: a triangle whose two edges at one vertex are both boundary
+// edges, with an angle near 180° there. The restricted Delaunay triangulation makes one where three
+// seeds on a nearly straight stretch of boundary have cells that meet on the surface (their dual
+// Voronoi vertex lies there, however far the circumcentre); its smallest angle is then a
+// degree or two (pig.off, ChineseDragon-10kv.off, mech-holes-shark.off at 5k). Removing it takes
+// the ear's vertex off the boundary, which then runs along the chord of the other two: the same
+// boundary loop, a manifold as before, the same Euler characteristic (one vertex, two edges and
+// one triangle fewer).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "cvtmesh/features.hpp"
+
+namespace cvtmesh {
+
+// Removes, until none is left, every ear whose angle at its vertex is at least 160° (so that its
+// smallest angle is under 10°, and its vertex lies within sin(20°)/2, about 0.17, of the longer
+// edge's length from the chord), unless that vertex is `kept` (corners). The removed vertices are
+// left unreferenced. Returns how many ears were removed. Sequential, in triangle order.
+std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept);
+
+}  // namespace cvtmesh
