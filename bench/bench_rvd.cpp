@@ -14,6 +14,10 @@
 //     wide (issue 19: coarse inputs cost what their cells cost); rvd_over_delaunay as above.
 //   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
 //     compares to random seeds on the same mesh (exact_fallback_pct, ties).
+//   BM_MultiNerveExtraction/N: the output's extraction (restricted Delaunay triangulation with
+//     the cells' pieces, paper §4.4: what every polishing and topology round runs) on icosphere
+//     level 5 (20,480 faces) with N random seeds, against an RVD pass with integrals on the same
+//     seeds (extraction_over_pass).
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -29,6 +33,7 @@
 #include "cvtmesh/sampling.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
+#include "voronoi/multi_nerve.hpp"
 
 namespace {
 
@@ -158,6 +163,30 @@ void BM_RvdDegenerate(benchmark::State& state) {
 BENCHMARK(BM_RvdDegenerate)
     ->Arg(0)
     ->Arg(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+void BM_MultiNerveExtraction(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
+  for (auto _ : state) {
+    const Pass pass = rvd_pass(mesh, seeds);
+    const auto start = Clock::now();
+    const RestrictedVoronoiDiagram rvd(mesh, seeds);
+    MultiNerveBuilder rdt(rvd);
+    rvd.traverse(rdt);
+    benchmark::DoNotOptimize(rdt.result().triangles.size());
+    const double extraction_s = seconds(start);
+    state.SetIterationTime(pass.rvd_s + extraction_s);
+    state.counters["pass_s"] = pass.rvd_s;
+    state.counters["extraction_s"] = extraction_s;
+    state.counters["extraction_over_pass"] = extraction_s / pass.rvd_s;
+  }
+}
+BENCHMARK(BM_MultiNerveExtraction)
+    ->Arg(10'000)
+    ->Arg(100'000)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

@@ -62,8 +62,14 @@ class CellPieceCollector : public PolygonSink {
   std::vector<std::vector<Polygon>> polygon_chunks_;
   std::vector<std::vector<Side>> side_chunks_;
   std::vector<CellPiece> pieces_;
-  // (seed, triangle, piece index), sorted: what piece_at searches.
-  std::vector<std::tuple<Index, Index, std::size_t>> piece_of_;
+  // Each polygon's piece (index in pieces_), grouped by seed (from piece_offsets_[seed]), each
+  // seed's by triangle: what piece_at searches.
+  struct PieceOf {
+    Index seed, triangle;
+    std::size_t piece;
+  };
+  std::vector<PieceOf> piece_of_;
+  std::vector<std::size_t> piece_offsets_;
 };
 
 }  // namespace cvtmesh
