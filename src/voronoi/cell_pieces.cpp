@@ -8,24 +8,6 @@
 
 namespace cvtmesh {
 
-namespace {
-
-// `items` in the order of seed_of(item) (< seeds), stably: a counting sort. `offsets`, if
-// given, gets where each seed's items start (and, last, the end).
-template <class T, class SeedOf>
-std::vector<T> grouped_by_seed(std::vector<T> items, Index seeds, const SeedOf& seed_of,
-                               std::vector<std::size_t>* offsets = nullptr) {
-  std::vector<std::size_t> start(static_cast<std::size_t>(seeds) + 1, 0);
-  for (const T& item : items) ++start[seed_of(item) + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  if (offsets) *offsets = start;
-  std::vector<T> grouped(items.size());
-  for (T& item : items) grouped[start[seed_of(item)]++] = std::move(item);
-  return grouped;
-}
-
-}  // namespace
-
 void CellPieceCollector::begin(std::size_t chunks) {
   polygon_chunks_.assign(chunks, {});
   side_chunks_.assign(chunks, {});
@@ -56,19 +38,27 @@ void CellPieceCollector::end() {
   // The chunks are joined into one array each, sized exactly, and each chunk is freed as soon as
   // it is copied: at the peak, extraction held every polygon up to three times (issue 22: 264 MB
   // of a 490 MB run on a 500k-triangle torus).
-  std::size_t polygon_count = 0, side_count = 0;
-  for (std::size_t c = 0; c < polygon_chunks_.size(); ++c) {
-    polygon_count += polygon_chunks_[c].size();
-    side_count += side_chunks_[c].size();
+  // A cell meets an input edge in one segment (the cell is convex): its polygons on either side
+  // of the edge both have that segment as a side, and are one piece. The sides go straight into
+  // seed order (a counting sort, stable in traversal order), then each cell's few sides are
+  // sorted: sorting them all together was a third of this step.
+  std::size_t polygon_count = 0;
+  Index seeds = 0;
+  for (const auto& chunk : polygon_chunks_) {
+    polygon_count += chunk.size();
+    for (const Polygon& polygon : chunk) seeds = std::max(seeds, polygon.seed + 1);
   }
+  std::vector<std::size_t> side_start(static_cast<std::size_t>(seeds) + 1, 0);
+  for (const auto& chunk : side_chunks_)
+    for (const Side& side : chunk) ++side_start[side.seed + 1];
+  std::partial_sum(side_start.begin(), side_start.end(), side_start.begin());
   std::vector<Polygon> polygons;
-  std::vector<Side> sides;
+  std::vector<Side> sides(side_start.back());
   polygons.reserve(polygon_count);
-  sides.reserve(side_count);
   for (std::size_t c = 0; c < polygon_chunks_.size(); ++c) {
-    for (Side s : side_chunks_[c]) {
-      s.polygon += static_cast<Index>(polygons.size());
-      sides.push_back(s);
+    for (Side side : side_chunks_[c]) {
+      side.polygon += static_cast<Index>(polygons.size());
+      sides[side_start[side.seed]++] = side;
     }
     polygons.insert(polygons.end(), polygon_chunks_[c].begin(), polygon_chunks_[c].end());
     std::vector<Polygon>().swap(polygon_chunks_[c]);
@@ -76,12 +66,6 @@ void CellPieceCollector::end() {
   }
   polygon_chunks_.clear();
   side_chunks_.clear();
-  // A cell meets an input edge in one segment (the cell is convex): its polygons on either side
-  // of the edge both have that segment as a side, and are one piece. Sorted by seed first in
-  // linear time, then each cell's few sides (a sort of them all was a third of this step).
-  Index seeds = 0;
-  for (const Polygon& polygon : polygons) seeds = std::max(seeds, polygon.seed + 1);
-  sides = grouped_by_seed(std::move(sides), seeds, [](const Side& side) { return side.seed; });
   for (std::size_t i = 0, j = 0; i < sides.size(); i = j) {
     while (j < sides.size() && sides[j].seed == sides[i].seed) ++j;
     std::sort(sides.begin() + static_cast<std::ptrdiff_t>(i),
@@ -126,15 +110,18 @@ void CellPieceCollector::end() {
     sorted.push_back(pieces_[order[i]]);
   }
   pieces_ = std::move(sorted);
-  // Per seed, its polygons' (triangle, piece), by triangle.
-  std::vector<PieceOf> piece_of(polygons.size());
+  // Per seed, its polygons' (triangle, piece), by triangle: scattered into seed order, then
+  // each seed's few sorted.
+  piece_offsets_.assign(static_cast<std::size_t>(seeds) + 1, 0);
+  for (const Polygon& polygon : polygons) ++piece_offsets_[polygon.seed + 1];
+  std::partial_sum(piece_offsets_.begin(), piece_offsets_.end(), piece_offsets_.begin());
+  std::vector<std::size_t> next(piece_offsets_.begin(), piece_offsets_.end() - 1);
+  piece_of_.resize(polygons.size());
   for (std::size_t p = 0; p < polygons.size(); ++p)
-    piece_of[p] = {polygons[p].seed, polygons[p].triangle, rank[slot[roots.find(p)]]};
-  piece_of_ = grouped_by_seed(
-      std::move(piece_of), seeds, [](const PieceOf& x) { return x.seed; }, &piece_offsets_);
-  for (std::size_t s = 0; s < seeds; ++s)
-    std::sort(piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[s]),
-              piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[s + 1]),
+    piece_of_[next[polygons[p].seed]++] = {polygons[p].triangle, rank[slot[roots.find(p)]]};
+  for (std::size_t seed = 0; seed < seeds; ++seed)
+    std::sort(piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed]),
+              piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed + 1]),
               [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
 }
 

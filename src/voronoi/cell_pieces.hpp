@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cstdint>
-#include <tuple>
 #include <vector>
 
 #include "cvtmesh/rvd.hpp"
@@ -65,7 +64,7 @@ class CellPieceCollector : public PolygonSink {
   // Each polygon's piece (index in pieces_), grouped by seed (from piece_offsets_[seed]), each
   // seed's by triangle: what piece_at searches.
   struct PieceOf {
-    Index seed, triangle;
+    Index triangle;
     std::size_t piece;
   };
   std::vector<PieceOf> piece_of_;
