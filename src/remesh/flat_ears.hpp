@@ -15,9 +15,10 @@
 
 namespace cvtmesh {
 
-// Removes, until none is left, every ear whose angle at its vertex is at least 160° (so that its
-// smallest angle is under 10°, and its vertex lies within sin(20°)/2, about 0.17, of the longer
-// edge's length from the chord), unless that vertex is `kept` (corners). The removed vertices are
+// Removes, until none is left, every ear whose angle at its vertex is at least 160°, unless that
+// vertex is `kept` (corners). Such an ear's smallest angle is under 10°, and its vertex lies
+// within 0.09 chord lengths of the chord: the height |ab||ac| sin θ / |bc| is at most
+// sin 20° (|ab| + |ac|)² / (4 |bc|), and |bc| ≥ cos 10° (|ab| + |ac|). The removed vertices are
 // left unreferenced. Returns how many ears were removed. Sequential, in triangle order.
 std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept);
 
