@@ -10,6 +10,7 @@
 #include "features/crease_at_scale.hpp"
 #include "features/edge_uses.hpp"
 #include "features/twin_curves.hpp"
+#include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
 
@@ -17,9 +18,7 @@ namespace {
 
 Vec3 unit_normal(const TriangleMesh& mesh, std::size_t t) {
   const auto [a, b, c] = mesh.corners(t);
-  const Vec3 n = cross(b - a, c - a);
-  const double length = norm(n);
-  return length > 0 ? (1 / length) * n : Vec3{};
+  return unit_normal(a, b, c);
 }
 
 // Whether the two triangles' normals make an angle above the threshold, their orientations

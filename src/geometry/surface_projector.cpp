@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "geometry/point_tree.hpp"
+#include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
 
@@ -47,7 +48,7 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
       if (length == 0 && !keep_degenerate) continue;
       tree_->triangles.emplace_back(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z),
                                     Kernel::Point_3(c.x, c.y, c.z));
-      tree_->normals.push_back(length > 0 ? (1 / length) * n : Vec3{});
+      tree_->normals.push_back(unit_or_zero(n));
       tree_->surface_id.push_back(t);
     }
     if (!tree_->triangles.empty()) break;

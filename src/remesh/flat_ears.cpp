@@ -1,8 +1,9 @@
 #include "remesh/flat_ears.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
+
+#include "features/edge_uses.hpp"
 
 namespace cvtmesh {
 
@@ -13,12 +14,8 @@ const double kFlatEarCos = std::cos(160 * M_PI / 180);
 
 using EdgeUses = std::map<Edge, int>;
 
-Edge key(Index a, Index b) {
-  return {std::min(a, b), std::max(a, b)};
-}
-
 void count(EdgeUses& uses, const Triangle& t, int by) {
-  for (int k = 0; k < 3; ++k) uses[key(t[k], t[(k + 1) % 3])] += by;
+  for (int k = 0; k < 3; ++k) uses[edge_of(t[k], t[(k + 1) % 3])] += by;
 }
 
 // The corner of `t` that is a flat ear's vertex, or -1. `triangles_at`: per vertex, the
@@ -29,9 +26,9 @@ int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeUses&
   for (int k = 0; k < 3; ++k) {
     const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
     if (kept[a] || triangles_at[a] != 1) continue;
-    if (uses.at(key(a, b)) != 1 || uses.at(key(a, c)) != 1) continue;
+    if (uses.at(edge_of(a, b)) != 1 || uses.at(edge_of(a, c)) != 1) continue;
     // The third edge must be an interior edge: a triangle alone is a component, not an ear.
-    if (uses.at(key(b, c)) != 2) continue;
+    if (uses.at(edge_of(b, c)) != 2) continue;
     const Vec3 u = mesh.vertices[b] - mesh.vertices[a], v = mesh.vertices[c] - mesh.vertices[a];
     const double lengths = norm(u) * norm(v);
     if (lengths > 0 && dot(u, v) <= kFlatEarCos * lengths) return k;

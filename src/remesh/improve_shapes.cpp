@@ -6,11 +6,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include "cvtmesh/quality.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
 
@@ -52,14 +52,9 @@ bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   return s.min_angle < kMinAngleDeg || s.quality < kMinQuality;
 }
 
-std::optional<Vec3> unit(const Vec3& n) {
-  const double length = norm(n);
-  if (!(length > 0)) return std::nullopt;
-  return (1 / length) * n;
-}
-
-std::optional<Vec3> unit_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return unit(cross(b - a, c - a));
+// Whether a unit_or_zero vector has no direction.
+bool no_direction(const Vec3& n) {
+  return n == Vec3{};
 }
 
 double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -212,16 +207,16 @@ class ShapeImprover {
     const std::vector<Vec3>& p = mesh_.vertices;
     // The pair's plane, weighted by area (a sliver's normal says little), must hold both new
     // triangles and every old one that is not a sliver.
-    const auto n = unit(cross(p[b] - p[a], p[c] - p[a]) + cross(p[a] - p[b], p[d] - p[b]));
+    const Vec3 n = unit_or_zero(cross(p[b] - p[a], p[c] - p[a]) + cross(p[a] - p[b], p[d] - p[b]));
     const double before = std::min(score(p[a], p[b], p[c]), score(p[b], p[a], p[d]));
     const double after = std::min(score(p[c], p[a], p[d]), score(p[d], p[b], p[c]));
     if (!(after > before)) return false;
     const std::array<std::array<Index, 3>, 4> planar{{{a, b, c}, {b, a, d}, {c, a, d}, {d, b, c}}};
     for (int k = 0; k < 4; ++k) {
       const auto [u, v, w] = planar[k];
-      const auto m = unit_normal(p[u], p[v], p[w]);
+      const Vec3 m = unit_normal(p[u], p[v], p[w]);
       if (k < 2 && triangle_shape(p[u], p[v], p[w]).quality < kSliver) continue;
-      if (!m || !n || dot(*m, *n) < kFlatCos) return false;
+      if (no_direction(m) || no_direction(n) || dot(m, n) < kFlatCos) return false;
     }
     // The new diagonal stays about as close to the surface as the old one.
     if (gap_at(0.5 * (p[c] + p[d])) >
@@ -252,9 +247,9 @@ class ShapeImprover {
     for (Index t : around_[v]) {
       const auto [a, b, c] = mesh_.corners(t);
       before = std::min(before, score(a, b, c));
-      const auto n = unit_normal(a, b, c);
-      if (!n) return false;
-      normals.push_back(*n);
+      const Vec3 n = unit_normal(a, b, c);
+      if (no_direction(n)) return false;
+      normals.push_back(n);
     }
     for (const double step : {1.0, 0.5}) {
       p[v] = surface_.nearest(from + step * (centre - from)).point;
@@ -263,8 +258,8 @@ class ShapeImprover {
       for (std::size_t k = 0; k < around_[v].size() && !folds; ++k) {
         const auto [a, b, c] = mesh_.corners(around_[v][k]);
         after = std::min(after, score(a, b, c));
-        const auto n = unit_normal(a, b, c);
-        folds = !n || dot(*n, normals[k]) < kTurnCos;
+        const Vec3 n = unit_normal(a, b, c);
+        folds = no_direction(n) || dot(n, normals[k]) < kTurnCos;
       }
       // Its triangles stay about as close to the surface as they were at the start, and near
       // the surface point where it was then (else smoothing would shrink every convex tip). The

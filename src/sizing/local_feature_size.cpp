@@ -9,17 +9,13 @@
 #include "cvtmesh/sizing.hpp"
 #include "geometry/area_sampler.hpp"
 #include "geometry/point_tree.hpp"
+#include "geometry/unit_vector.hpp"
 #include "sizing/gradation.hpp"
 #include "sizing/poles.hpp"
 
 namespace cvtmesh {
 
 namespace {
-
-Vec3 unit(const Vec3& v) {
-  const double length = norm(v);
-  return length > 0 ? (1 / length) * v : Vec3{};
-}
 
 // The used vertices with their area-weighted normals (a vertex whose normals cancel is left
 // out), and `count` area-uniform samples with their triangles' normals.
@@ -29,7 +25,7 @@ std::vector<SurfaceSample> surface_samples(const TriangleMesh& mesh, std::size_t
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto [a, b, c] = mesh.corners(t);
     const Vec3 n = cross(b - a, c - a);  // twice the area: the weight of the vertex normals
-    face_normal[t] = unit(n);
+    face_normal[t] = unit_or_zero(n);
     for (const Index v : mesh.triangles[t]) vertex_normal[v] += n;
   }
   const AreaSampler sampler(mesh, seed);
@@ -39,7 +35,7 @@ std::vector<SurfaceSample> surface_samples(const TriangleMesh& mesh, std::size_t
     samples[k] = {s.point, face_normal[s.triangle]};
   });
   for (Index v = 0; v < mesh.vertices.size(); ++v)
-    if (const Vec3 n = unit(vertex_normal[v]); dot(n, n) > 0)
+    if (const Vec3 n = unit_or_zero(vertex_normal[v]); dot(n, n) > 0)
       samples.push_back({mesh.vertices[v], n});
   return samples;
 }

@@ -8,6 +8,26 @@
 
 namespace cvtmesh {
 
+namespace {
+
+// Where each seed's items start when they are laid out in seed order: offsets[s] to
+// offsets[s + 1], from a count per seed (`count[s + 1]` holds seed s's; count[0] is 0).
+std::vector<std::size_t> seed_offsets(std::vector<std::size_t> count) {
+  std::partial_sum(count.begin(), count.end(), count.begin());
+  return count;
+}
+
+// Sorts each seed's range of `items` (laid out by `offsets`) by `less`: a cell's few items.
+template <class T, class Less>
+void sort_each_seed(std::vector<T>& items, const std::vector<std::size_t>& offsets,
+                    const Less& less) {
+  for (std::size_t s = 0; s + 1 < offsets.size(); ++s)
+    std::sort(items.begin() + static_cast<std::ptrdiff_t>(offsets[s]),
+              items.begin() + static_cast<std::ptrdiff_t>(offsets[s + 1]), less);
+}
+
+}  // namespace
+
 void CellPieceCollector::begin(std::size_t chunks) {
   polygon_chunks_.assign(chunks, {});
   side_chunks_.assign(chunks, {});
@@ -48,17 +68,18 @@ void CellPieceCollector::end() {
     polygon_count += chunk.size();
     for (const Polygon& polygon : chunk) seeds = std::max(seeds, polygon.seed + 1);
   }
-  std::vector<std::size_t> side_start(static_cast<std::size_t>(seeds) + 1, 0);
+  std::vector<std::size_t> sides_of(static_cast<std::size_t>(seeds) + 1, 0);
   for (const auto& chunk : side_chunks_)
-    for (const Side& side : chunk) ++side_start[side.seed + 1];
-  std::partial_sum(side_start.begin(), side_start.end(), side_start.begin());
+    for (const Side& side : chunk) ++sides_of[side.seed + 1];
+  const std::vector<std::size_t> side_offsets = seed_offsets(std::move(sides_of));
+  std::vector<std::size_t> next(side_offsets.begin(), side_offsets.end() - 1);
   std::vector<Polygon> polygons;
-  std::vector<Side> sides(side_start.back());
+  std::vector<Side> sides(side_offsets.back());
   polygons.reserve(polygon_count);
   for (std::size_t c = 0; c < polygon_chunks_.size(); ++c) {
     for (Side side : side_chunks_[c]) {
       side.polygon += static_cast<Index>(polygons.size());
-      sides[side_start[side.seed]++] = side;
+      sides[next[side.seed]++] = side;
     }
     polygons.insert(polygons.end(), polygon_chunks_[c].begin(), polygon_chunks_[c].end());
     std::vector<Polygon>().swap(polygon_chunks_[c]);
@@ -66,13 +87,9 @@ void CellPieceCollector::end() {
   }
   polygon_chunks_.clear();
   side_chunks_.clear();
-  for (std::size_t i = 0, j = 0; i < sides.size(); i = j) {
-    while (j < sides.size() && sides[j].seed == sides[i].seed) ++j;
-    std::sort(sides.begin() + static_cast<std::ptrdiff_t>(i),
-              sides.begin() + static_cast<std::ptrdiff_t>(j), [](const Side& a, const Side& b) {
-                return std::tie(a.edge, a.polygon) < std::tie(b.edge, b.polygon);
-              });
-  }
+  sort_each_seed(sides, side_offsets, [](const Side& a, const Side& b) {
+    return std::tie(a.edge, a.polygon) < std::tie(b.edge, b.polygon);
+  });
   UnionFind roots(polygons.size());
   for (std::size_t i = 1; i < sides.size(); ++i)
     if (sides[i].seed == sides[i - 1].seed && sides[i].edge == sides[i - 1].edge)
@@ -112,17 +129,15 @@ void CellPieceCollector::end() {
   pieces_ = std::move(sorted);
   // Per seed, its polygons' (triangle, piece), by triangle: scattered into seed order, then
   // each seed's few sorted.
-  piece_offsets_.assign(static_cast<std::size_t>(seeds) + 1, 0);
-  for (const Polygon& polygon : polygons) ++piece_offsets_[polygon.seed + 1];
-  std::partial_sum(piece_offsets_.begin(), piece_offsets_.end(), piece_offsets_.begin());
-  std::vector<std::size_t> next(piece_offsets_.begin(), piece_offsets_.end() - 1);
+  std::vector<std::size_t> polygons_of(static_cast<std::size_t>(seeds) + 1, 0);
+  for (const Polygon& polygon : polygons) ++polygons_of[polygon.seed + 1];
+  piece_offsets_ = seed_offsets(std::move(polygons_of));
+  next.assign(piece_offsets_.begin(), piece_offsets_.end() - 1);
   piece_of_.resize(polygons.size());
   for (std::size_t p = 0; p < polygons.size(); ++p)
     piece_of_[next[polygons[p].seed]++] = {polygons[p].triangle, rank[slot[roots.find(p)]]};
-  for (std::size_t seed = 0; seed < seeds; ++seed)
-    std::sort(piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed]),
-              piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed + 1]),
-              [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
+  sort_each_seed(piece_of_, piece_offsets_,
+                 [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
 }
 
 std::size_t CellPieceCollector::piece_at(Index seed, Index triangle) const {
