@@ -10,6 +10,7 @@
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
+#include "features/curve_projector.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/improve_shapes.hpp"
 #include "support/shapes.hpp"
@@ -33,7 +34,7 @@ TriangleMesh flat_pair() {
 TEST(ImproveShapes, FlipsTheLongDiagonalOfAFlatPair) {
   TriangleMesh mesh = flat_pair();
   const SurfaceProjector surface(mesh);
-  const ShapeImprovement done = improve_shapes(mesh, surface, {}, {}, 5);
+  const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, {}, 5);
   EXPECT_EQ(done.flips, 1u);
   EXPECT_TRUE(has_edge(mesh, 2, 3));
   EXPECT_FALSE(has_edge(mesh, 0, 1));
@@ -48,7 +49,7 @@ TEST(ImproveShapes, FlipsTheLongDiagonalOfAFlatPair) {
 TEST(ImproveShapes, NeverFlipsAFeatureEdge) {
   TriangleMesh mesh = flat_pair();
   const SurfaceProjector surface(mesh);
-  EXPECT_EQ(improve_shapes(mesh, surface, {}, {Edge{0, 1}}, 5).flips, 0u);
+  EXPECT_EQ(improve_shapes(mesh, surface, nullptr, {}, {Edge{0, 1}}, 5).flips, 0u);
   EXPECT_EQ(mesh.triangles, flat_pair().triangles);
 }
 
@@ -69,7 +70,7 @@ TEST(ImproveShapes, AJitteredSphereGetsBetterWithTheSameTopologyOnTheSurface) {
   TriangleMesh mesh = jittered_on_sphere(icosphere(3), 0.04, 7);  // edges about 0.1 long
   const QualityReport before = measure_quality(mesh);
   const TopologyReport topology = analyze_topology(mesh);
-  const ShapeImprovement done = improve_shapes(mesh, surface, {}, {}, 5);
+  const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, {}, 5);
   const QualityReport after = measure_quality(mesh);
   EXPECT_GT(done.moves, 0u);
   EXPECT_GT(after.q_min, before.q_min + 0.1);
@@ -89,19 +90,80 @@ TEST(ImproveShapes, FixedAndBoundaryVerticesStayWhereTheyAre) {
   const SurfaceProjector surface(dome);
   TriangleMesh mesh = jittered_on_sphere(hemisphere(6, 12), 0.08, 3);
   for (Vec3& v : mesh.vertices) v.z = std::max(v.z, 0.0);
-  std::vector<bool> fixed(mesh.vertices.size(), false);
-  for (Index v = 0; v < mesh.vertices.size(); v += 5) fixed[v] = true;
+  std::vector<VertexSupport> support(mesh.vertices.size());
+  for (Index v = 0; v < mesh.vertices.size(); v += 5) support[v].kind = VertexSupport::Kind::fixed;
   const TriangleMesh start = mesh;
-  const ShapeImprovement done = improve_shapes(mesh, surface, fixed, {}, 5);
+  const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, support, {}, 5);
   EXPECT_GT(done.moves, 0u);
   std::vector<bool> boundary(mesh.vertices.size(), false);
   for (Index v = 0; v < mesh.vertices.size(); ++v)
     boundary[v] = std::abs(start.vertices[v].z) < 1e-12;
   for (Index v = 0; v < mesh.vertices.size(); ++v)
-    if (fixed[v] || boundary[v]) {
+    if (support[v].kind == VertexSupport::Kind::fixed || boundary[v]) {
       EXPECT_EQ(mesh.vertices[v], start.vertices[v]) << v;
     }
   EXPECT_TRUE(same_topology(analyze_topology(mesh), analyze_topology(start)));
+}
+
+// A roof over [-1, 1]², z = -|y|, as an n by n grid (n even): its ridge, the row y = 0, is the
+// vertices n/2 * (n + 1) to n/2 * (n + 1) + n.
+TriangleMesh roof(int n) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
+      mesh.vertices.push_back({x, y, -std::abs(y)});
+    }
+  const auto at = [&](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      add_quad(mesh, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return mesh;
+}
+
+// Row j of roof(n) (the ridge when j = n/2, a boundary when 0) as one open feature curve.
+Features row_of_roof(int n, int j) {
+  Features features;
+  FeatureCurve ridge;
+  for (int i = 0; i <= n; ++i) ridge.vertices.push_back(static_cast<Index>(j * (n + 1) + i));
+  for (int i = 0; i < n; ++i) features.edges.push_back({ridge.vertices[i], ridge.vertices[i + 1]});
+  features.curves.push_back(ridge);
+  return features;
+}
+
+// A vertex on a crease (or on a boundary that is a feature curve) slides along it to where its
+// triangles are better, and stays exactly on it; the curve's edges stay.
+void expect_slides_along_row(int row) {
+  const TriangleMesh fine = roof(40);
+  const SurfaceProjector surface(fine);
+  const CurveProjector curves(fine, row_of_roof(40, row * 5));
+  TriangleMesh mesh = roof(8);
+  const Features ridge = row_of_roof(8, row);
+  const Index middle = ridge.curves[0].vertices[4];
+  const double y = mesh.vertices[middle].y, z = mesh.vertices[middle].z;
+  mesh.vertices[middle].x = 0.18;  // towards its neighbour at x = 0.25
+  std::vector<VertexSupport> support(mesh.vertices.size());
+  for (Index v : ridge.curves[0].vertices) support[v] = {VertexSupport::Kind::curve, 0};
+  const QualityReport before = measure_quality(mesh);
+  improve_shapes(mesh, surface, &curves, support, ridge.edges, 5);
+  const QualityReport after = measure_quality(mesh);
+  EXPECT_LT(std::abs(mesh.vertices[middle].x), 0.09);
+  for (Index v : ridge.curves[0].vertices) {
+    EXPECT_EQ(mesh.vertices[v].y, y) << v;
+    EXPECT_EQ(mesh.vertices[v].z, z) << v;
+  }
+  for (const Edge& e : ridge.edges) EXPECT_TRUE(has_edge(mesh, e[0], e[1]));
+  EXPECT_GT(after.q_min, before.q_min + 0.1);
+  EXPECT_GT(after.angle_min_deg, before.angle_min_deg + 5);
+}
+
+TEST(ImproveShapes, ACreaseVertexSlidesAlongItsCurve) {
+  expect_slides_along_row(4);
+}
+
+TEST(ImproveShapes, ABoundaryVertexSlidesAlongItsCurve) {
+  expect_slides_along_row(0);
 }
 
 // In a remesh, the last step mends what an unconverged tessellation leaves: a seed dragged most of
@@ -146,8 +208,7 @@ TriangleMesh dome(int rings, int sectors, const std::function<double(int)>& angl
   for (int k = 0; k < sectors; ++k) mesh.triangles.push_back({0, at(1, k), at(1, k + 1)});
   for (int i = 1; i < rings; ++i)
     for (int k = 0; k < sectors; ++k) {
-      mesh.triangles.push_back({at(i, k), at(i + 1, k), at(i + 1, k + 1)});
-      mesh.triangles.push_back({at(i, k), at(i + 1, k + 1), at(i, k + 1)});
+      add_quad(mesh, at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
     }
   return mesh;
 }
@@ -159,7 +220,7 @@ TEST(ImproveShapes, TheTipOfADomeStays) {
   const SurfaceProjector projector(surface);
   TriangleMesh mesh = dome(2, 6, [](int k) { return 2 * M_PI * std::pow(k / 6.0, 1.5); });
   EXPECT_LT(measure_quality(mesh).angle_min_deg, 35.0);
-  improve_shapes(mesh, projector, {}, {}, 5);
+  improve_shapes(mesh, projector, nullptr, {}, {}, 5);
   EXPECT_EQ(mesh.vertices[0], (Vec3{0, 0, 1}));
 }
 

@@ -6,8 +6,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "cvtmesh/quality.hpp"
+#include "features/curve_projector.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/unit_vector.hpp"
@@ -39,13 +41,40 @@ constexpr double kGapFloor = 0.01;
 // surface at the output's scale: moving it would uncover the tip (on bunny.off at 1k vertices,
 // its ear's tip came 0.4% of the diagonal farther from the output; with this, 0.1%).
 constexpr double kTipDefectDeg = 10;
+// The search for a better place (a compass search: steps in fixed directions, halved when none
+// helps) starts a quarter of the vertex's mean edge length away and stops below 1/32 of it.
+constexpr double kFirstStep = 0.25;
+constexpr double kLastStep = 1.0 / 32;
+// At most this many steps or halvings: each step makes the star strictly better, but its
+// places are not on a finite grid, so only a cap bounds their number.
+constexpr int kMaxSearchSteps = 64;
+// Directions tried on the surface: this many, evenly spread in the star's tangent plane.
+constexpr int kDirections = 8;
+// The search runs only while the star's worst Q or θmin / 60° is under this.
+constexpr double kSearchBelow = 0.7;
 
-// One figure for a triangle's shape: Q and θmin/60° are both 1 when equilateral; the smaller
-// one says how far from that it is.
-double score(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const TriangleShape s = triangle_shape(a, b, c);
-  return std::min(s.quality, s.min_angle / 60);
-}
+// The worst Q and the worst θmin (in units of 60°: both are 1 when equilateral) of a few
+// triangles, and the smaller of the two as one score.
+struct Worst {
+  double quality = 1;
+  double angle = 1;
+
+  void add(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const TriangleShape s = triangle_shape(a, b, c);
+    quality = std::min(quality, s.quality);
+    angle = std::min(angle, s.min_angle / 60);
+  }
+  double score() const { return std::min(quality, angle); }
+  // Whether this (the triangles a change makes) is better than `o` (those it replaces): a
+  // better score, and neither Q nor θmin under both o's and the mesh's worst at the start
+  // (`floor`), so that the mesh's own Qmin and θmin never fall below where they were, whichever
+  // triangle holds them. (A floor raised as they rise leaves the search less room: on the
+  // corpus at 1k it did worse on 3 meshes, better on 1.)
+  bool better_than(const Worst& o, const Worst& floor) const {
+    return score() > o.score() && quality >= std::min(o.quality, floor.quality) &&
+           angle >= std::min(o.angle, floor.angle);
+  }
+};
 
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const TriangleShape s = triangle_shape(a, b, c);
@@ -69,24 +98,31 @@ int slot(const Triangle& t, Index v) {
   return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
 }
 
+// The shape of a vertex's star: one closed disc (inside the surface), one half-disc (on a
+// boundary), or anything else (a pinch, a non-manifold edge, opposite orientations).
+enum class Star { disc, half_disc, other };
+
 class ShapeImprover {
  public:
-  ShapeImprover(TriangleMesh& mesh, const SurfaceProjector& surface, std::vector<bool> fixed,
-                const std::vector<Edge>& features)
+  ShapeImprover(TriangleMesh& mesh, const SurfaceProjector& surface, const CurveProjector* curves,
+                std::vector<VertexSupport> support, const std::vector<Edge>& features)
       : mesh_(mesh),
         surface_(surface),
-        fixed_(std::move(fixed)),
+        curves_(curves),
+        support_(std::move(support)),
         features_(features),
         start_(mesh.vertices),
         around_(mesh.vertices.size()) {
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
       for (Index v : mesh_.triangles[t]) around_[v].push_back(t);
+    for (Index t = 0; t < mesh_.triangles.size(); ++t) {
+      const auto [a, b, c] = mesh_.corners(t);
+      floor_.add(a, b, c);
+    }
+    support_.resize(mesh_.vertices.size());
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
-      // A tip of the surface (a vertex whose triangles' angles fall far short of 360°, or
-      // exceed it, at a saddle) stays: moved, it would uncover the tip.
-      if (!fixed_[v] && (!interior(v) || std::abs(angle_defect(v)) > kTipDefectDeg))
-        fixed_[v] = true;
-      start_gap_.push_back(fixed_[v] ? 0 : gap_around(v));  // only moves need it
+      if (!may_move(v)) support_[v].kind = VertexSupport::Kind::fixed;
+      start_gap_.push_back(support_[v].kind == VertexSupport::Kind::fixed ? 0 : gap_around(v));
     }
   }
 
@@ -115,7 +151,7 @@ class ShapeImprover {
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     for (Index v : candidates)
-      if (!fixed_[v] && try_move(v)) {
+      if (support_[v].kind != VertexSupport::Kind::fixed && try_move(v)) {
         ++done.moves;
         changed = true;
       }
@@ -128,23 +164,76 @@ class ShapeImprover {
     return badly_shaped(a, b, c);
   }
 
-  // Whether every edge at `v` has exactly two triangles, which use it in opposite directions: a
-  // vertex inside an oriented surface, away from boundaries and non-manifold edges.
-  bool interior(Index v) const {
-    std::vector<std::pair<Index, int>> uses;  // (other end, +1 out of v / -1 into v)
-    for (Index t : around_[v]) {
-      const Triangle& f = mesh_.triangles[t];
-      const int i = slot(f, v);
-      uses.push_back({f[(i + 1) % 3], +1});
-      uses.push_back({f[(i + 2) % 3], -1});
+  // Walks round `v` from triangle to triangle across shared edges: whether its triangles make
+  // one disc or one half-disc, consistently oriented. A half-disc's two boundary neighbours go
+  // in `ends`.
+  Star star(Index v, std::array<Index, 2>& ends) const {
+    const std::vector<Index>& ts = around_[v];
+    // Triangle t, going round v, runs from neighbour out(t) to neighbour in(t).
+    const auto out = [&](Index t) {
+      return mesh_.triangles[t][(slot(mesh_.triangles[t], v) + 1) % 3];
+    };
+    const auto in = [&](Index t) {
+      return mesh_.triangles[t][(slot(mesh_.triangles[t], v) + 2) % 3];
+    };
+    const auto after = [&](Index t) {  // the triangle that starts where t ends, if just one
+      std::optional<Index> next;
+      for (Index s : ts)
+        if (out(s) == in(t)) {
+          if (next) return std::optional<Index>{};
+          next = s;
+        }
+      return next;
+    };
+    if (ts.size() < 2) return Star::other;
+    Index first = ts.front();
+    std::size_t starts = 0;
+    for (Index t : ts)
+      if (std::ranges::none_of(ts, [&](Index s) { return in(s) == out(t); })) {
+        first = t;
+        ++starts;
+      }
+    if (starts > 1) return Star::other;
+    std::size_t seen = 1;
+    Index t = first;
+    for (std::optional<Index> next = after(t); next && *next != first; next = after(t)) {
+      t = *next;
+      if (++seen > ts.size()) return Star::other;
     }
-    std::sort(uses.begin(), uses.end());
-    if (uses.size() < 6 || uses.size() % 2 != 0) return false;
-    for (std::size_t k = 0; k < uses.size(); k += 2)
-      if (uses[k].first != uses[k + 1].first || uses[k].second + uses[k + 1].second != 0 ||
-          (k + 2 < uses.size() && uses[k + 2].first == uses[k].first))
+    if (seen != ts.size()) return Star::other;
+    if (starts == 0) return in(t) == out(first) && ts.size() >= 3 ? Star::disc : Star::other;
+    ends = {out(first), in(t)};
+    return Star::half_disc;
+  }
+
+  // Whether `v` may move at all: a surface vertex inside the surface that is no tip (moved, a
+  // tip would be uncovered), or a curve vertex between its two feature edges.
+  bool may_move(Index v) const {
+    std::array<Index, 2> ends{};
+    switch (support_[v].kind) {
+      case VertexSupport::Kind::fixed:
         return false;
-    return true;
+      case VertexSupport::Kind::surface:
+        return star(v, ends) == Star::disc && std::abs(angle_defect(v)) <= kTipDefectDeg;
+      case VertexSupport::Kind::curve: {
+        std::vector<Index> along;  // its neighbours across feature edges
+        for (Index t : around_[v])
+          for (Index w : mesh_.triangles[t])
+            if (w != v && is_feature(v, w)) along.push_back(w);
+        std::sort(along.begin(), along.end());
+        along.erase(std::unique(along.begin(), along.end()), along.end());
+        if (along.size() != 2 || curves_ == nullptr) return false;
+        const Star shape = star(v, ends);
+        std::sort(ends.begin(), ends.end());
+        return shape == Star::disc || (shape == Star::half_disc && std::ranges::equal(ends, along));
+      }
+    }
+    return false;
+  }
+
+  bool is_feature(Index a, Index b) const {
+    return std::binary_search(features_.begin(), features_.end(),
+                              Edge{std::min(a, b), std::max(a, b)});
   }
 
   // The triangles with both `a` and `b`.
@@ -191,9 +280,7 @@ class ShapeImprover {
   // Flips edge a→b of triangle t1 = (a, b, c) with its neighbour t2 = (b, a, d) into (c, a, d)
   // and (d, b, c), when that makes the worse of the two better.
   bool try_flip(Index t1, Index a, Index b) {
-    if (std::binary_search(features_.begin(), features_.end(),
-                           Edge{std::min(a, b), std::max(a, b)}))
-      return false;
+    if (is_feature(a, b)) return false;
     if (around_[a].size() < 2 || around_[b].size() < 2) return false;
     const std::vector<Index> both = sharing(a, b);
     if (both.size() != 2) return false;
@@ -208,9 +295,12 @@ class ShapeImprover {
     // The pair's plane, weighted by area (a sliver's normal says little), must hold both new
     // triangles and every old one that is not a sliver.
     const Vec3 n = unit_or_zero(cross(p[b] - p[a], p[c] - p[a]) + cross(p[a] - p[b], p[d] - p[b]));
-    const double before = std::min(score(p[a], p[b], p[c]), score(p[b], p[a], p[d]));
-    const double after = std::min(score(p[c], p[a], p[d]), score(p[d], p[b], p[c]));
-    if (!(after > before)) return false;
+    Worst before, after;
+    before.add(p[a], p[b], p[c]);
+    before.add(p[b], p[a], p[d]);
+    after.add(p[c], p[a], p[d]);
+    after.add(p[d], p[b], p[c]);
+    if (!after.better_than(before, floor_)) return false;
     const std::array<std::array<Index, 3>, 4> planar{{{a, b, c}, {b, a, d}, {c, a, d}, {d, b, c}}};
     for (int k = 0; k < 4; ++k) {
       const auto [u, v, w] = planar[k];
@@ -231,65 +321,147 @@ class ShapeImprover {
     return true;
   }
 
-  // Moves `v` to the nearest surface point to the mean of its neighbours (or, failing that,
-  // halfway there), when that makes the worst triangle of its star better.
+  // Moves `v` where the worst triangle of its star is better: first to the nearest surface point
+  // to the mean of its neighbours (or halfway there), as tangential relaxation does; then, while
+  // that star is still badly shaped, by a compass search for its best place on the surface (or
+  // along its curve). Returns whether it moved.
   bool try_move(Index v) {
     std::vector<Vec3>& p = mesh_.vertices;
-    Vec3 sum{};
-    for (Index t : around_[v]) {
-      const Triangle& f = mesh_.triangles[t];
-      sum += p[f[(slot(f, v) + 1) % 3]];  // each neighbour once: it follows v in one triangle
-    }
     const Vec3 from = p[v];
-    const Vec3 centre = (1.0 / static_cast<double>(around_[v].size())) * sum;
-    double before = 1;
     std::vector<Vec3> normals;
     for (Index t : around_[v]) {
       const auto [a, b, c] = mesh_.corners(t);
-      before = std::min(before, score(a, b, c));
-      const Vec3 n = unit_normal(a, b, c);
-      if (no_direction(n)) return false;
-      normals.push_back(n);
+      normals.push_back(unit_normal(a, b, c));
+      if (no_direction(normals.back())) return false;
     }
-    for (const double step : {1.0, 0.5}) {
-      p[v] = surface_.nearest(from + step * (centre - from)).point;
-      double after = 1;
-      bool folds = false;
-      for (std::size_t k = 0; k < around_[v].size() && !folds; ++k) {
-        const auto [a, b, c] = mesh_.corners(around_[v][k]);
-        after = std::min(after, score(a, b, c));
-        const Vec3 n = unit_normal(a, b, c);
-        folds = no_direction(n) || dot(n, normals[k]) < kTurnCos;
+    const Worst before = star_shape(v);
+    Worst best = before;
+    // Where v would do better than `best`, with nothing folded or taken off the surface.
+    const auto better_at = [&](const Vec3& q) {
+      p[v] = q;
+      const Worst now = star_shape(v);
+      const bool better = now.better_than(best, floor_) && keeps_surface(v, normals);
+      p[v] = from;
+      if (better) best = now;
+      return better;
+    };
+    Vec3 at = from;
+    if (support_[v].kind == VertexSupport::Kind::surface) {
+      Vec3 sum{};
+      for (Index t : around_[v]) {
+        const Triangle& f = mesh_.triangles[t];
+        sum += p[f[(slot(f, v) + 1) % 3]];  // each neighbour once: it follows v in one triangle
       }
-      // Its triangles stay about as close to the surface as they were at the start, and near
-      // the surface point where it was then (else smoothing would shrink every convex tip). The
-      // bounds are those of the start, so that moves after moves cannot drift away.
-      const double allowed = kGapGrowth * start_gap_[v] + kGapFloor * distance(start_[v], p[v]);
-      if (!folds && after > before && gap_around(v) <= allowed &&
-          distance_to_star(start_[v], v) <= allowed)
-        return true;
+      const Vec3 centre = (1.0 / static_cast<double>(around_[v].size())) * sum;
+      for (const double step : {1.0, 0.5}) {
+        const Vec3 q = surface_.nearest(from + step * (centre - from)).point;
+        if (better_at(q)) {
+          at = q;
+          break;
+        }
+      }
     }
-    p[v] = from;
-    return false;
+    if (best.score() < kSearchBelow) at = searched_from(v, at, better_at);
+    p[v] = at;
+    return best.score() > before.score();
+  }
+
+  // The compass search of try_move, from `at`: returns the best place found.
+  template <class BetterAt>
+  Vec3 searched_from(Index v, Vec3 at, const BetterAt& better_at) const {
+    const double size = mean_edge_length(v);
+    if (support_[v].kind == VertexSupport::Kind::curve) {
+      const std::size_t c = support_[v].curve;
+      double s = curves_->nearest(c, at).arclength;
+      double step = kFirstStep * size;
+      for (int k = 0; k < kMaxSearchSteps && step >= kLastStep * size; ++k) {
+        const double to = better_at(curves_->at(c, s + step))   ? s + step
+                          : better_at(curves_->at(c, s - step)) ? s - step
+                                                                : s;
+        if (to == s) step /= 2;
+        s = to;
+      }
+      return curves_->at(c, s);
+    }
+    Vec3 normal{};
+    for (Index t : around_[v]) {
+      const auto [a, b, c] = mesh_.corners(t);
+      normal += cross(b - a, c - a);
+    }
+    const Vec3 n = unit_or_zero(normal);
+    const Vec3 u =
+        unit_or_zero(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
+    const Vec3 w = cross(n, u);
+    if (no_direction(u)) return at;
+    double step = kFirstStep * size;
+    for (int k = 0; k < kMaxSearchSteps && step >= kLastStep * size; ++k) {
+      std::optional<Vec3> next;
+      for (int d = 0; d < kDirections; ++d) {
+        const double angle = 2 * M_PI * d / kDirections;
+        const Vec3 q =
+            surface_.nearest(at + step * (std::cos(angle) * u + std::sin(angle) * w)).point;
+        if (better_at(q)) next = q;  // better_at raised the bar: the last one found is the best
+      }
+      if (next)
+        at = *next;
+      else
+        step /= 2;
+    }
+    return at;
+  }
+
+  // The worst shapes of the triangles at `v`.
+  Worst star_shape(Index v) const {
+    Worst worst;
+    for (Index t : around_[v]) {
+      const auto [a, b, c] = mesh_.corners(t);
+      worst.add(a, b, c);
+    }
+    return worst;
+  }
+
+  double mean_edge_length(Index v) const {
+    double sum = 0;
+    for (Index t : around_[v]) {
+      const Triangle& f = mesh_.triangles[t];
+      sum += distance(mesh_.vertices[v], mesh_.vertices[f[(slot(f, v) + 1) % 3]]);
+    }
+    return sum / static_cast<double>(around_[v].size());
+  }
+
+  // Whether, with `v` where it is now, no triangle at it turned by more than kTurnCos from its
+  // `normals` (folded), its triangles are about as close to the surface as they were at the start,
+  // and near the surface point where it was then (else smoothing would shrink every convex tip).
+  // The bounds are those of the start, so that moves after moves cannot drift away.
+  bool keeps_surface(Index v, const std::vector<Vec3>& normals) const {
+    for (std::size_t k = 0; k < around_[v].size(); ++k) {
+      const auto [a, b, c] = mesh_.corners(around_[v][k]);
+      const Vec3 n = unit_normal(a, b, c);
+      if (no_direction(n) || dot(n, normals[k]) < kTurnCos) return false;
+    }
+    const double allowed =
+        kGapGrowth * start_gap_[v] + kGapFloor * distance(start_[v], mesh_.vertices[v]);
+    return gap_around(v) <= allowed && distance_to_star(start_[v], v) <= allowed;
   }
 
   TriangleMesh& mesh_;
   const SurfaceProjector& surface_;
-  std::vector<bool> fixed_;
+  const CurveProjector* curves_;
+  std::vector<VertexSupport> support_;
   const std::vector<Edge>& features_;
   const std::vector<Vec3> start_;           // the vertices where they were
   std::vector<double> start_gap_;           // per vertex, gap_around it then
+  Worst floor_;                             // the mesh's worst Q and θmin at the start
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
 };
 
 }  // namespace
 
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
-                                std::vector<bool> fixed, const std::vector<Edge>& feature_edges,
-                                int sweeps) {
+                                const CurveProjector* curves, std::vector<VertexSupport> support,
+                                const std::vector<Edge>& feature_edges, int sweeps) {
   ShapeImprovement done;
-  fixed.resize(mesh.vertices.size(), false);
-  ShapeImprover improver(mesh, surface, std::move(fixed), feature_edges);
+  ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges);
   for (int k = 0; k < sweeps && improver.sweep(done); ++k) {
   }
   return done;

@@ -10,30 +10,41 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "cvtmesh/features.hpp"
 
 namespace cvtmesh {
 
+class CurveProjector;
 class SurfaceProjector;
+
+// Where a vertex may go: anywhere on the surface, along one feature curve (keeping the curve's
+// edges on the curve), or nowhere (corners, vertices of features that could not be traced).
+struct VertexSupport {
+  enum class Kind : std::uint8_t { surface, curve, fixed };
+  Kind kind = Kind::surface;
+  std::uint32_t curve = 0;  // for Kind::curve: its index in the CurveProjector
+};
 
 struct ShapeImprovement {
   std::size_t flips = 0;  // edges flipped
   std::size_t moves = 0;  // vertex moves kept
 };
 
-// Improves the triangles of `mesh` with θmin under 35° or Q under 0.65 (what a converged CVT
-// gives on a smooth surface), in `sweeps` sweeps at most. `fixed` (per vertex) marks vertices that
-// must not move (features, corners); vertices on boundary or non-manifold edges, and tips and
-// saddles of the surface (angle defect over 10°), never move.
-// `feature_edges` (sorted) never flip, and of the others only those with exactly two triangles,
-// which use them in opposite directions. Each change keeps the triangles it touches about as close
-// to the surface as they were. Moved
-// vertices go to their nearest point on `surface`. Sequential, in a fixed order: the result does
-// not depend on the thread count.
+// Improves the triangles of `mesh` with θmin under 40° or Q under 0.7 (a little above what a
+// converged CVT gives on a smooth surface), in `sweeps` sweeps at most. `support` (per vertex;
+// missing ones are surface vertices) says where each may go: surface vertices go to their nearest
+// point on `surface`, curve vertices stay on their curve of `curves` (needed when any vertex is a
+// curve vertex). Vertices on boundary or non-manifold edges, other than curve vertices between
+// their two feature edges, and tips and saddles of the surface (angle defect over 10°), never
+// move. `feature_edges` (sorted) never flip, and of the others only those with exactly two
+// triangles, which use them in opposite directions. Each change keeps the triangles it touches
+// about as close to the surface as they were. Sequential, in a fixed order: the result does not
+// depend on the thread count.
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
-                                std::vector<bool> fixed, const std::vector<Edge>& feature_edges,
-                                int sweeps);
+                                const CurveProjector* curves, std::vector<VertexSupport> support,
+                                const std::vector<Edge>& feature_edges, int sweeps);
 
 }  // namespace cvtmesh

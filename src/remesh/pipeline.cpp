@@ -80,18 +80,23 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
   return traced;
 }
 
-// Per output vertex: whether it traces a feature (a corner, a curve seed, an end of a traced
-// feature edge), and must stay where it is.
-std::vector<bool> feature_vertices(const TriangleMesh& output, const std::map<Vec3, Index>& id,
-                                   const std::vector<Vec3>& seeds,
-                                   const SeedConstraints& constraints,
-                                   const std::vector<Edge>& feature_edges) {
-  std::vector<bool> on(output.vertices.size(), false);
+// Per output vertex, where improve_shapes may move it: a curve seed along its curve; a corner,
+// or any other end of a traced feature edge, nowhere; the rest on the surface.
+std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
+                                           const std::map<Vec3, Index>& id,
+                                           const std::vector<Vec3>& seeds,
+                                           const SeedConstraints& constraints,
+                                           const std::vector<Edge>& feature_edges) {
+  using Kind = VertexSupport::Kind;
+  std::vector<VertexSupport> support(output.vertices.size());
+  for (const Edge& e : feature_edges) support[e[0]].kind = support[e[1]].kind = Kind::fixed;
   for (std::size_t s = 0; s < constraints.kind.size(); ++s)
     if (constraints.kind[s] != SeedConstraints::Kind::surface)
-      if (const auto it = id.find(seeds[s]); it != id.end()) on[it->second] = true;
-  for (const Edge& e : feature_edges) on[e[0]] = on[e[1]] = true;
-  return on;
+      if (const auto it = id.find(seeds[s]); it != id.end()) {
+        const bool curve = constraints.kind[s] == SeedConstraints::Kind::curve;
+        support[it->second] = {curve ? Kind::curve : Kind::fixed, constraints.curve[s]};
+      }
+  return support;
 }
 
 // One output size at most; none only for initial seeds (their count is the size) or target
@@ -292,8 +297,8 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   }
   // Last, as it moves vertices off the seeds' positions (which the matching above needs).
   const ShapeImprovement shapes = improve_shapes(
-      result.mesh, *projector,
-      feature_vertices(result.mesh, output_id, seeds, constraints, result.feature_edges),
+      result.mesh, *projector, &*curves,
+      vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges),
       result.feature_edges, settings.shape_sweeps);
   result.shape_flips = shapes.flips;
   result.shape_moves = shapes.moves;

@@ -65,8 +65,7 @@ TriangleMesh torus(double R, double r, int nu, int nv) {
   auto id = [&](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
-      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
     }
   }
   return m;
@@ -93,8 +92,7 @@ TriangleMesh cube(int n) {
         for (int j = 0; j < n; ++j) {
           // (axis+1, axis+2, axis) is right-handed: counter-clockwise seen from +axis.
           if (side > 0) {
-            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
           } else {
             m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
             m.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
@@ -123,8 +121,7 @@ TriangleMesh disk(int rings, int sectors) {
   for (int s = 0; s < sectors; ++s) m.triangles.push_back({0, id(1, s), id(1, s + 1)});
   for (int k = 1; k < rings; ++k) {
     for (int s = 0; s < sectors; ++s) {
-      m.triangles.push_back({id(k, s), id(k + 1, s), id(k + 1, s + 1)});
-      m.triangles.push_back({id(k, s), id(k + 1, s + 1), id(k, s + 1)});
+      add_quad(m, id(k, s), id(k + 1, s), id(k + 1, s + 1), id(k, s + 1));
     }
   }
   return m;
@@ -162,8 +159,7 @@ TriangleMesh cylinder(int rings, int sectors) {
   auto id = [&](int k, int s) { return static_cast<Index>(k * sectors + (s % sectors)); };
   for (int k = 0; k < rings; ++k) {
     for (int s = 0; s < sectors; ++s) {
-      m.triangles.push_back({id(k, s), id(k, s + 1), id(k + 1, s + 1)});
-      m.triangles.push_back({id(k, s), id(k + 1, s + 1), id(k + 1, s)});
+      add_quad(m, id(k, s), id(k, s + 1), id(k + 1, s + 1), id(k + 1, s));
     }
   }
   for (int s = 0; s < sectors; ++s) {
@@ -171,6 +167,11 @@ TriangleMesh cylinder(int rings, int sectors) {
     m.triangles.push_back({bottom + 1, id(rings, s), id(rings, s + 1)});
   }
   return m;
+}
+
+void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d) {
+  mesh.triangles.push_back({a, b, c});
+  mesh.triangles.push_back({a, c, d});
 }
 
 TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b) {

@@ -30,6 +30,9 @@ TriangleMesh hemisphere(int rings, int sectors);
 // quads, each cap a fan around its centre; genus 0, sharp 90° rims.
 TriangleMesh cylinder(int rings, int sectors);
 
+// Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
+void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
+
 // Both meshes in one, `b` after `a` (indices of `b` shifted).
 TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b);
 
