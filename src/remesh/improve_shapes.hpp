@@ -38,7 +38,7 @@ struct ShapeImprovement {
 // missing ones are surface vertices) says where each may go: surface vertices go to their nearest
 // point on `surface`, curve vertices stay on their curve of `curves` (needed when any vertex is a
 // curve vertex). Vertices on boundary or non-manifold edges, other than curve vertices between
-// their two feature edges, and tips and saddles of the surface (angle defect over 10°), never
+// their two feature edges, and tips and saddles of the surface (angle defect over 20°), never
 // move. `feature_edges` (sorted) never flip, and of the others only those with exactly two
 // triangles, which use them in opposite directions. Each change keeps the triangles it touches
 // about as close to the surface as they were. Sequential, in a fixed order: the result does not
