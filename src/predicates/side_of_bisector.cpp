@@ -210,20 +210,48 @@ std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b) {
   return a.symbols[0];
 }
 
-// Position of a C vertex from its definition, in bounded doubles (cell seed at origin).
-V<BoundedDouble> c_vertex_position(const ClipFrame& f, const Definition& def) {
-  using B = BoundedDouble;
+// |a| × |b| with every minus a plus: a bound on the magnitude of each term of a cross product.
+Vec3 cross_of_magnitudes(const Vec3& a, const Vec3& b) {
+  return {a.y * b.z + a.z * b.y, a.z * b.x + a.x * b.z, a.x * b.y + a.y * b.x};
+}
+
+// Position and error bound of a type C vertex, where bisectors k and l cross the facet (rows
+// r0 = 2K, r1 = 2L, r2 = n of M, right side b = (K·K, L·L, n·Q0); cell seed at the origin):
+// p = M⁻¹ b = N / D with N = (K·K)(r1×n) + (L·L)(n×r0) + (n·Q0)(r0×r1), D = r0·(r1×n). Plain
+// doubles with a static bound, as for type B (BoundedDouble's bookkeeping made this a sixth of
+// an RVD pass). N and D are polynomials in the inputs, each monomial picking up at most 15 (N)
+// and 11 (D) roundings on its way: K, L, Q0 and the facet's edges 1; n = e1×e2 4; r1×n 7;
+// r0×r1 4; K·K 5; n·Q0 8; each product of N 13, their sum 15; D 11. So |N − fl(N)| ≤ γ15 times
+// the same sum of products taken over absolute values (Higham, "Accuracy and Stability of
+// Numerical Algorithms", §3.1), which is evaluated alongside, itself rounded down by at most
+// 15u: 16u covers both, and 12u for D. The quotient and the translation back add their own.
+void facet_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
+  constexpr double u = BoundedDouble::kU;
   const Vec3& xi = f.seeds[f.cell];
-  const V<B> K = diff<B>(f.seeds[def.k], xi);
-  const B two(2);
-  const V<B> L = diff<B>(f.seeds[def.l], xi);
-  const V<B> n = cross(diff<B>(f.corners[1], f.corners[0]), diff<B>(f.corners[2], f.corners[0]));
-  const V<B> r0 = scaled(two, K), r1 = scaled(two, L);
-  const B D = det(r0, r1, n);
-  // M⁻¹ = [r1×r2 | r2×r0 | r0×r1] / D for the matrix M of rows r0, r1, r2 = n.
-  const V<B> numerator = scaled(dot(K, K), cross(r1, n)) + scaled(dot(L, L), cross(n, r0)) +
-                         scaled(dot(n, diff<B>(f.corners[0], xi)), cross(r0, r1));
-  return {numerator.x / D, numerator.y / D, numerator.z / D};
+  const Vec3 K = f.seeds[def.k] - xi, L = f.seeds[def.l] - xi, Q0 = f.corners[0] - xi;
+  const Vec3 e1 = f.corners[1] - f.corners[0], e2 = f.corners[2] - f.corners[0];
+  const Vec3 n = cross(e1, e2), r0 = 2 * K, r1 = 2 * L;
+  const Vec3 aK = abs(K), aL = abs(L), ar0 = 2 * aK, ar1 = 2 * aL;
+  const Vec3 an = cross_of_magnitudes(abs(e1), abs(e2));
+  const Vec3 c0 = cross(r1, n), c1 = cross(n, r0), c2 = cross(r0, r1);
+  const Vec3 a0 = cross_of_magnitudes(ar1, an), a1 = cross_of_magnitudes(an, ar0),
+             a2 = cross_of_magnitudes(ar0, ar1);
+  const Vec3 N = dot(K, K) * c0 + dot(L, L) * c1 + dot(n, Q0) * c2;
+  const Vec3 aN = dot(aK, aK) * a0 + dot(aL, aL) * a1 + dot(an, abs(Q0)) * a2;
+  const double D = dot(r0, c0), error_D = 12 * u * dot(ar0, a0);
+  const double margin = std::abs(D) - error_D;
+  v.error = BoundedDouble::kTiny;
+  std::array<double, 3> point{};
+  for (int c = 0; c < 3; ++c) {
+    const double q = N[c] / D, error_N = 16 * u * aN[c];
+    const double error_q =
+        margin > 0 ? (std::abs(N[c]) * error_D + std::abs(D) * error_N) / (std::abs(D) * margin) +
+                         u * std::abs(q)
+                   : std::numeric_limits<double>::infinity();
+    point[c] = q + xi[c];
+    v.error = std::max(v.error, (error_q + u * std::abs(point[c])) * (1 + 4 * u));
+  }
+  v.point = {point[0], point[1], point[2]};
 }
 
 // Position and error bound of a type B vertex, q1 + t (q2 − q1) with t = N/D, N = K·K − 2 Q1·K,
@@ -263,14 +291,10 @@ RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVer
   v.symbols = {shared, static_cast<std::int32_t>(j)};
   const Definition def = define(v);
   const Vec3& xi = f.seeds[f.cell];
-  if (def.bisectors == 1) {
+  if (def.bisectors == 1)
     edge_crossing(f, def, v);
-  } else {
-    const V<BoundedDouble> p = c_vertex_position(f, def);
-    const BoundedDouble x = p.x + xi.x, y = p.y + xi.y, z = p.z + xi.z;
-    v.point = {x.value, y.value, z.value};
-    v.error = std::max({x.error, y.error, z.error});
-  }
+  else
+    facet_crossing(f, def, v);
   if (!std::isfinite(v.error) || !std::isfinite(v.point.x + v.point.y + v.point.z)) {
     // Nearly parallel planes: the formula is ill-conditioned. Interpolate along the segment
     // where the (approximate) side function changes sign; this position serves integration
