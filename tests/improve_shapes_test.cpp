@@ -133,8 +133,9 @@ Features row_of_roof(int n, int j) {
 }
 
 // A vertex on a crease (or on a boundary that is a feature curve) slides along it to where its
-// triangles are better, and stays exactly on it; the curve's edges stay.
-void expect_slides_along_row(int row) {
+// triangles are better, and stays exactly on it; the curve's edges stay. With `one_link_lost`,
+// its link to its left neighbour is no feature edge (not traced): it slides all the same.
+void expect_slides_along_row(int row, bool one_link_lost = false) {
   const TriangleMesh fine = roof(40);
   const SurfaceProjector surface(fine);
   const CurveProjector curves(fine, row_of_roof(40, row * 5));
@@ -145,15 +146,17 @@ void expect_slides_along_row(int row) {
   mesh.vertices[middle].x = 0.18;  // towards its neighbour at x = 0.25
   std::vector<VertexSupport> support(mesh.vertices.size());
   for (Index v : ridge.curves[0].vertices) support[v] = {VertexSupport::Kind::curve, 0};
+  std::vector<Edge> traced = ridge.edges;
+  if (one_link_lost) traced.erase(traced.begin() + 3);
   const QualityReport before = measure_quality(mesh);
-  improve_shapes(mesh, surface, &curves, support, ridge.edges, 5);
+  improve_shapes(mesh, surface, &curves, support, traced, 5);
   const QualityReport after = measure_quality(mesh);
   EXPECT_LT(std::abs(mesh.vertices[middle].x), 0.09);
   for (Index v : ridge.curves[0].vertices) {
     EXPECT_EQ(mesh.vertices[v].y, y) << v;
     EXPECT_EQ(mesh.vertices[v].z, z) << v;
   }
-  for (const Edge& e : ridge.edges) EXPECT_TRUE(has_edge(mesh, e[0], e[1]));
+  for (const Edge& e : traced) EXPECT_TRUE(has_edge(mesh, e[0], e[1]));
   EXPECT_GT(after.q_min, before.q_min + 0.1);
   EXPECT_GT(after.angle_min_deg, before.angle_min_deg + 5);
 }
@@ -164,6 +167,10 @@ TEST(ImproveShapes, ACreaseVertexSlidesAlongItsCurve) {
 
 TEST(ImproveShapes, ABoundaryVertexSlidesAlongItsCurve) {
   expect_slides_along_row(0);
+}
+
+TEST(ImproveShapes, ACreaseVertexWithOneUntracedLinkSlidesAlongItsCurve) {
+  expect_slides_along_row(4, true);
 }
 
 // In a remesh, the last step mends what an unconverged tessellation leaves: a seed dragged most of

@@ -210,7 +210,8 @@ class ShapeImprover {
   }
 
   // Whether `v` may move at all: a surface vertex inside the surface that is no tip (moved, a
-  // tip would be uncovered), or a curve vertex between its two feature edges.
+  // tip would be uncovered), or a curve vertex with one or two feature edges inside the surface,
+  // or between its two on a boundary.
   bool may_move(Index v) const {
     std::array<Index, 2> ends{};
     switch (support_[v].kind) {
@@ -225,7 +226,9 @@ class ShapeImprover {
             if (w != v && is_feature(v, w)) along.push_back(w);
         std::sort(along.begin(), along.end());
         along.erase(std::unique(along.begin(), along.end()), along.end());
-        if (along.size() != 2 || curves_ == nullptr) return false;
+        // One feature edge when the link to its other neighbour along the curve was not traced:
+        // it may still slide, and the edge it has stays a chord of the curve.
+        if (along.empty() || along.size() > 2 || curves_ == nullptr) return false;
         const Star shape = star(v, ends);
         std::sort(ends.begin(), ends.end());
         return shape == Star::disc || (shape == Star::half_disc && std::ranges::equal(ends, along));
