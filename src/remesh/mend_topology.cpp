@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "cvtmesh/quality.hpp"
+#include "features/edge_uses.hpp"
 #include "remesh/flip_links.hpp"
 #include "remesh/output_defects.hpp"
 
@@ -70,13 +71,10 @@ std::size_t add_surface_seeds(const MendContext& m, const std::vector<Vec3>& poi
 }
 
 // Every triangle's three edges, each with the smaller vertex id first, sorted (with repeats).
-std::vector<Edge> edge_uses(const TriangleMesh& mesh) {
-  std::vector<Edge> uses;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k)
-      uses.push_back({std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])});
-  std::sort(uses.begin(), uses.end());
-  return uses;
+std::vector<Edge> edges_with_repeats(const TriangleMesh& mesh) {
+  std::vector<Edge> edges;
+  for (const EdgeUse& use : edge_uses(mesh)) edges.push_back(use.edge);
+  return edges;
 }
 
 // Where output boundary edges, and output edges of three or more triangles, may run: along the
@@ -89,7 +87,7 @@ struct SpecialEdges {
 };
 
 SpecialEdges special_edges(const MendContext& m) {
-  const std::vector<Edge> uses = edge_uses(m.surface);
+  const std::vector<Edge> uses = edges_with_repeats(m.surface);
   std::vector<Edge> boundary, branch;
   for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {  // runs of equal edges
     while (j < uses.size() && uses[j] == uses[i]) ++j;
@@ -101,8 +99,7 @@ SpecialEdges special_edges(const MendContext& m) {
     for (std::size_t c = 0; c < along.size(); ++c) {
       const auto& v = m.features.curves[c].vertices;
       along[c] =
-          v.size() >= 2 && std::binary_search(edges.begin(), edges.end(),
-                                              Edge{std::min(v[0], v[1]), std::max(v[0], v[1])});
+          v.size() >= 2 && std::binary_search(edges.begin(), edges.end(), edge_of(v[0], v[1]));
     }
     return along;
   };
@@ -209,7 +206,7 @@ Assessment assess(const MendContext& m, const SpecialEdges& special, const Trian
 }  // namespace
 
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
-  std::vector<Edge> edges = edge_uses(mesh);
+  std::vector<Edge> edges = edges_with_repeats(mesh);
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
 }
