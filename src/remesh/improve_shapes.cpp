@@ -10,6 +10,7 @@
 
 #include "cvtmesh/quality.hpp"
 #include "features/curve_projector.hpp"
+#include "features/edge_uses.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/unit_vector.hpp"
@@ -238,8 +239,7 @@ class ShapeImprover {
   }
 
   bool is_feature(Index a, Index b) const {
-    return std::binary_search(features_.begin(), features_.end(),
-                              Edge{std::min(a, b), std::max(a, b)});
+    return std::binary_search(features_.begin(), features_.end(), edge_of(a, b));
   }
 
   // The triangles with both `a` and `b`.

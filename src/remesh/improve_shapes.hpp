@@ -3,10 +3,11 @@
 // details finer than the spacing, has a few badly shaped triangles left. Around them, this step
 // flips edges between nearly coplanar triangles and moves vertices towards the centre of their
 // star, back onto the input surface, as tangential relaxation does in CGAL's and pmp-library's
-// remeshers. Neither changes the triangulation's topology (a flip never makes an edge that is
-// there already, a move changes no connectivity), so a manifold stays a manifold with the same
-// Euler characteristic and boundary loops, and a change is kept only when the worst triangle it
-// touches gets better.
+// remeshers, then searches around each vertex still at a bad triangle for a better place (on the
+// surface, or along its feature curve for a vertex that traces one). Neither changes the
+// triangulation's topology (a flip never makes an edge that is there already, a move changes no
+// connectivity), so a manifold stays a manifold with the same Euler characteristic and boundary
+// loops, and a change is kept only when the worst triangle it touches gets better.
 #pragma once
 
 #include <cstddef>
