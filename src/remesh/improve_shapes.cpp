@@ -351,6 +351,13 @@ class ShapeImprover {
       if (better) best = now;
       return better;
     };
+    // Whether v's triangles alone would do better with v at q: cheap, no projection.
+    const auto promising = [&](const Vec3& q) {
+      p[v] = q;
+      const bool better = star_shape(v).better_than(best, floor_);
+      p[v] = from;
+      return better;
+    };
     Vec3 at = from;
     if (support_[v].kind == VertexSupport::Kind::surface) {
       Vec3 sum{};
@@ -367,14 +374,16 @@ class ShapeImprover {
         }
       }
     }
-    if (best.score() < kSearchBelow) at = searched_from(v, at, better_at);
+    if (best.score() < kSearchBelow) at = searched_from(v, at, better_at, promising);
     p[v] = at;
     return best.score() > before.score();
   }
 
-  // The compass search of try_move, from `at`: returns the best place found.
-  template <class BetterAt>
-  Vec3 searched_from(Index v, Vec3 at, const BetterAt& better_at) const {
+  // The compass search of try_move, from `at`: returns the best place found. On the surface, a
+  // step is projected (the search's main cost) only when it looks better in the tangent plane.
+  template <class BetterAt, class Promising>
+  Vec3 searched_from(Index v, Vec3 at, const BetterAt& better_at,
+                     const Promising& promising) const {
     const double size = mean_edge_length(v);
     if (support_[v].kind == VertexSupport::Kind::curve) {
       const std::size_t c = support_[v].curve;
@@ -404,8 +413,9 @@ class ShapeImprover {
       std::optional<Vec3> next;
       for (int d = 0; d < kDirections; ++d) {
         const double angle = 2 * M_PI * d / kDirections;
-        const Vec3 q =
-            surface_.nearest(at + step * (std::cos(angle) * u + std::sin(angle) * w)).point;
+        const Vec3 in_plane = at + step * (std::cos(angle) * u + std::sin(angle) * w);
+        if (!promising(in_plane)) continue;
+        const Vec3 q = surface_.nearest(in_plane).point;
         if (better_at(q)) next = q;  // better_at raised the bar: the last one found is the best
       }
       if (next)
@@ -467,6 +477,7 @@ ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surf
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
                                 const std::vector<Edge>& feature_edges, int sweeps) {
   ShapeImprovement done;
+  if (sweeps <= 0) return done;  // nothing to set up for
   ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges);
   for (int k = 0; k < sweeps && improver.sweep(done); ++k) {
   }
