@@ -202,20 +202,20 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       if (c.closed) edges.push_back(edge_of(c.vertices.back(), c.vertices[0]));
       return edges;
     };
+    std::vector<std::vector<Edge>> curve_edges;
     std::vector<bool> droppable;  // per curve: of sharp edges only
     for (const FeatureCurve& c : f.curves) {
-      const std::vector<Edge> edges = edges_of(c);
-      droppable.push_back(std::all_of(edges.begin(), edges.end(), sharp_only));
+      curve_edges.push_back(edges_of(c));
+      droppable.push_back(
+          std::all_of(curve_edges.back().begin(), curve_edges.back().end(), sharp_only));
     }
     const std::vector<bool> twin =
         settings.creases_at_scale ? twin_curves(mesh, f.curves, lengths, droppable, settings.scale)
                                   : std::vector<bool>(f.curves.size(), false);
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
-      if (droppable[c] && (twin[c] || !feature_at_scale(c))) {
-        const std::vector<Edge> edges = edges_of(f.curves[c]);
-        dropped.insert(dropped.end(), edges.begin(), edges.end());
-      }
+      if (droppable[c] && (twin[c] || !feature_at_scale(c)))
+        dropped.insert(dropped.end(), curve_edges[c].begin(), curve_edges[c].end());
     if (!dropped.empty()) {
       std::sort(dropped.begin(), dropped.end());
       std::erase_if(f.edges, [&](const Edge& e) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <map>
 
+#include "features/edge_uses.hpp"
+
 namespace cvtmesh {
 
 namespace {

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "cvtmesh/features.hpp"
-#include "features/edge_uses.hpp"
 
 namespace cvtmesh {
 

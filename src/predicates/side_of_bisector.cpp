@@ -210,6 +210,15 @@ std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b) {
   return a.symbols[0];
 }
 
+// The error bound of q, the rounded N / D, from the bounds of N and D plus q's own rounding;
+// infinite when D's bound reaches 0 (nearly parallel planes, see bisector_crossing).
+double quotient_error(double q, double N, double error_N, double D, double error_D) {
+  const double margin = std::abs(D) - error_D;
+  return margin > 0 ? (std::abs(N) * error_D + std::abs(D) * error_N) / (std::abs(D) * margin) +
+                          BoundedDouble::kU * std::abs(q)
+                    : std::numeric_limits<double>::infinity();
+}
+
 // |a| × |b| with every minus a plus: a bound on the magnitude of each term of a cross product.
 Vec3 cross_of_magnitudes(const Vec3& a, const Vec3& b) {
   return {a.y * b.z + a.z * b.y, a.z * b.x + a.x * b.z, a.x * b.y + a.y * b.x};
@@ -239,15 +248,11 @@ void facet_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
   const Vec3 N = dot(K, K) * c0 + dot(L, L) * c1 + dot(n, Q0) * c2;
   const Vec3 aN = dot(aK, aK) * a0 + dot(aL, aL) * a1 + dot(an, abs(Q0)) * a2;
   const double D = dot(r0, c0), error_D = 12 * u * dot(ar0, a0);
-  const double margin = std::abs(D) - error_D;
   v.error = BoundedDouble::kTiny;
   std::array<double, 3> point{};
   for (int c = 0; c < 3; ++c) {
-    const double q = N[c] / D, error_N = 16 * u * aN[c];
-    const double error_q =
-        margin > 0 ? (std::abs(N[c]) * error_D + std::abs(D) * error_N) / (std::abs(D) * margin) +
-                         u * std::abs(q)
-                   : std::numeric_limits<double>::infinity();
+    const double q = N[c] / D;
+    const double error_q = quotient_error(q, N[c], 16 * u * aN[c], D, error_D);
     point[c] = q + xi[c];
     v.error = std::max(v.error, (error_q + u * std::abs(point[c])) * (1 + 4 * u));
   }
@@ -270,11 +275,8 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
   const double N = dot(K, K) - 2 * dot(Q1, K), D = 2 * dot(e, K);
   const double error_N = 9 * u * (dot(aK, aK) + 2 * dot(aQ1, aK));
   const double error_D = 6 * u * 2 * dot(ae, aK);
-  const double t = N / D, margin = std::abs(D) - error_D;
-  const double error_t =
-      margin > 0 ? (std::abs(N) * error_D + std::abs(D) * error_N) / (std::abs(D) * margin) +
-                       u * std::abs(t)
-                 : std::numeric_limits<double>::infinity();
+  const double t = N / D;
+  const double error_t = quotient_error(t, N, error_N, D, error_D);
   v.point = q1 + t * e;
   const Vec3 ap = abs(v.point);
   const double e_max = std::max({ae.x, ae.y, ae.z});

@@ -12,16 +12,18 @@ namespace {
 // cos 160°: an angle at least this wide has a cosine at most this.
 const double kFlatEarCos = std::cos(160 * M_PI / 180);
 
-using EdgeUses = std::map<Edge, int>;
+// How many triangles use each edge (features/edge_uses lists the uses; here they are counted
+// down as ears go).
+using EdgeCounts = std::map<Edge, int>;
 
-void count(EdgeUses& uses, const Triangle& t, int by) {
+void count(EdgeCounts& uses, const Triangle& t, int by) {
   for (int k = 0; k < 3; ++k) uses[edge_of(t[k], t[(k + 1) % 3])] += by;
 }
 
 // The corner of `t` that is a flat ear's vertex, or -1. `triangles_at`: per vertex, the
 // triangles that use it (an ear's vertex has no other: where it has, it is a pinch of two
 // fans, which an ear's removal would change).
-int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeUses& uses,
+int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeCounts& uses,
                     const std::vector<int>& triangles_at, const std::vector<bool>& kept) {
   for (int k = 0; k < 3; ++k) {
     const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
@@ -39,7 +41,7 @@ int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeUses&
 }  // namespace
 
 std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept) {
-  EdgeUses uses;
+  EdgeCounts uses;
   std::vector<int> triangles_at(mesh.vertices.size(), 0);
   for (const Triangle& t : mesh.triangles) {
     count(uses, t, 1);
