@@ -178,9 +178,10 @@ def main():
     p.add_argument("--only", default="", help="comma-separated file names to run")
     p.add_argument("--timeout", type=float, default=600)
     p.add_argument("--markdown", action="store_true")
-    p.add_argument("--require-manifold", action="store_true",
-                   help="exit 1 unless every cvtmesh run succeeds with a manifold output (the "
-                        "test suite's guard); exit 77 (CTest's skip) without the shared data")
+    p.add_argument("--require-valid", action="store_true",
+                   help="exit 1 unless every cvtmesh run succeeds with a manifold output (or the "
+                        "non-manifold input's own edges kept) and the input's topology (the test "
+                        "suite's guard); exit 77 (CTest's skip) without the shared data")
     a, extra = p.parse_known_args()  # anything else goes to `cvtmesh remesh`
 
     exe = str(Path(a.build) / "apps" / "cvtmesh" / "cvtmesh")
@@ -189,7 +190,7 @@ def main():
     data = Path(a.data)
     if not data.is_dir():
         print(f"corpus.py: {data}: no shared data; nothing to measure", file=sys.stderr)
-        sys.exit(77 if a.require_manifold else 1)
+        sys.exit(77 if a.require_valid else 1)
     meshes = sorted(f for d in (data, data / "corpus") if d.is_dir() for f in d.iterdir()
                     if f.suffix.lower() in MESH_EXTS)
     if a.only:
@@ -203,7 +204,7 @@ def main():
     for mesh in meshes:
         for n in counts:
             # The guard checks validity only; the Hausdorff measurement would double its time.
-            task = (exe, str(vorpalite), mesh, n, a.timeout, extra, not a.require_manifold)
+            task = (exe, str(vorpalite), mesh, n, a.timeout, extra, not a.require_valid)
             tasks.append(("cvtmesh",) + task)
             if use_vorpalite:
                 tasks.append(("vorpalite",) + task)
@@ -237,8 +238,10 @@ def main():
           f"same topology {sum(r['same_topology'] for r in ok)}/{len(ours)}, "
           f"θmin < 10°: {sum(r['theta_min'] < 10 for r in ok)}, "
           f"seeds added {sum(r.get('seeds_added') or 0 for r in ok)}")
-    if a.require_manifold and (len(ok) < len(ours) or not all(r["manifold"] for r in ok)):
-        sys.exit("corpus.py: some outputs are not manifold, or some runs failed (rows above)")
+    if a.require_valid and (len(ok) < len(ours) or
+                            not all(r["manifold"] and r["same_topology"] for r in ok)):
+        sys.exit("corpus.py: some outputs are not manifold or lost the input's topology, or some "
+                 "runs failed (rows above)")
     if use_vorpalite:
         better, both, ratios = 0, 0, []
         shape_lost, kept_shape, better_kept, better_away = 0, 0, 0, 0

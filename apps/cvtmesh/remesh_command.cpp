@@ -100,7 +100,13 @@ int run_remesh(RemeshOptions o) {
 
   const MeshReport report = remesh_report(o.output, input, r);
   fmt::print("{}", o.json ? report.json.dump(2) + "\n" : report.text);
-  if (r.triangles_removed > 0)
+  if (r.triangles_removed > 0 && r.holes_closed > 0)
+    fmt::print(stderr,
+               "{}: warning: {} triangles removed where the triangulation was not a manifold and "
+               "topology control could not mend it (as where the input crosses itself); the {} "
+               "holes this opened were closed again with {} triangles, no vertex added\n",
+               o.output, r.triangles_removed, r.holes_closed, r.triangles_closing_holes);
+  else if (r.triangles_removed > 0)
     fmt::print(stderr,
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "
                "topology control could not mend it (more vertices would resolve the thin parts)\n",

@@ -271,6 +271,8 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.tips_closed += part.tips_closed;
   all.mend_rounds = std::max(all.mend_rounds, part.mend_rounds);
   all.triangles_removed += part.triangles_removed;
+  all.holes_closed += part.holes_closed;
+  all.triangles_closing_holes += part.triangles_closing_holes;
   all.flat_ears_removed += part.flat_ears_removed;
   all.time_limit_reached |= part.time_limit_reached;
 }

@@ -6,8 +6,8 @@
 
 namespace cvtmesh {
 
-std::size_t make_manifold(TriangleMesh& mesh, bool oriented) {
-  const std::size_t before = mesh.triangles.size();
+std::vector<Triangle> make_manifold(TriangleMesh& mesh, bool oriented) {
+  std::vector<Triangle> removed;
   // Boundary edges are allowed here: only what makes the mesh non-manifold goes, and folds when
   // the input is oriented (a non-orientable one, a Möbius strip, has a fold wherever it closes).
   const std::vector<bool> may_bound(mesh.vertices.size(), true);
@@ -15,11 +15,14 @@ std::size_t make_manifold(TriangleMesh& mesh, bool oriented) {
     OutputDefects d = find_output_defects(mesh, may_bound, oriented);
     if (d.empty()) break;
     std::sort(d.triangles.begin(), d.triangles.end());
-    std::erase_if(mesh.triangles, [&](const Triangle& t) {
-      return std::binary_search(d.triangles.begin(), d.triangles.end(), t);
-    });
+    const auto kept =
+        std::stable_partition(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) {
+          return !std::binary_search(d.triangles.begin(), d.triangles.end(), t);
+        });
+    removed.insert(removed.end(), kept, mesh.triangles.end());
+    mesh.triangles.erase(kept, mesh.triangles.end());
   }
-  return before - mesh.triangles.size();
+  return removed;
 }
 
 }  // namespace cvtmesh

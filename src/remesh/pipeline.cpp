@@ -20,6 +20,7 @@
 #include "features/renumber_features.hpp"
 #include "geometry/area_sampler.hpp"
 #include "quality/hausdorff_with_tree.hpp"
+#include "remesh/close_holes.hpp"
 #include "remesh/edge_length_ratio.hpp"
 #include "remesh/flat_ears.hpp"
 #include "remesh/improve_shapes.hpp"
@@ -276,8 +277,17 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.mesh = std::move(output.mesh);
   // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold. Only for
   // a manifold input: a non-manifold input edge is a feature the output keeps (issue 18).
-  if (result.input_topology.is_manifold())
-    result.triangles_removed = make_manifold(result.mesh, result.input_topology.orientable);
+  if (result.input_topology.is_manifold()) {
+    const std::vector<Triangle> removed =
+        make_manifold(result.mesh, result.input_topology.orientable);
+    result.triangles_removed = removed.size();
+    if (!removed.empty()) {
+      const ClosedHoles closed = close_opened_holes(result.mesh, removed, result.input_topology,
+                                                    result.input_topology.orientable);
+      result.holes_closed = closed.holes;
+      result.triangles_closing_holes = closed.triangles;
+    }
+  }
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
   std::vector<bool> corners(result.mesh.vertices.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;

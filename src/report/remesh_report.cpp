@@ -41,6 +41,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["islands_seeded"] = r.islands_seeded;
   j["seeds_refined"] = r.seeds_refined;
   j["triangles_removed"] = r.triangles_removed;
+  j["holes_closed"] = r.holes_closed;
+  j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
   j["vertices_added"] = r.vertices_added;
@@ -107,6 +109,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         "tips\n",
         r.mend_rounds, r.islands_seeded, r.seeds_refined, r.links_mended, r.links_flipped,
         r.tips_closed);
+  if (r.triangles_removed > 0)
+    text += fmt::format(
+        "  last step {} triangles removed at defects the rounds left; {} holes this opened "
+        "closed again with {} triangles on their own vertices\n",
+        r.triangles_removed, r.holes_closed, r.triangles_closing_holes);
   return report;
 }
 

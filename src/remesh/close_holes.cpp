@@ -1,0 +1,118 @@
+#include "remesh/close_holes.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+#include "features/edge_uses.hpp"
+#include "remesh/output_defects.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+struct BoundaryStep {
+  Index to = 0;
+  Index opposite = 0;  // the third vertex of the triangle the edge belongs to
+  bool opened = false;
+  bool seen = false;
+};
+
+// The boundary loops of `mesh`, each walked against its triangles' orientation, so that a
+// triangle closing the hole on three consecutive loop vertices a, b, c is (a, b, c). Only the
+// loops made wholly of opened edges (edges of `removed`); nothing when a vertex has two boundary
+// edges leaving it (a non-manifold vertex: make_manifold leaves none).
+struct Loop {
+  std::vector<Index> vertices;
+  std::vector<Index> opposite;  // per edge (vertices[i], vertices[i + 1]): its triangle's third
+};
+std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
+                                              std::span<const Triangle> removed) {
+  std::vector<Edge> opened;
+  for (const Triangle& t : removed)
+    for (int k = 0; k < 3; ++k) opened.push_back(edge_of(t[k], t[(k + 1) % 3]));
+  std::sort(opened.begin(), opened.end());
+
+  std::vector<std::optional<BoundaryStep>> from(mesh.vertices.size());
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    if (j == i + 1) {
+      const Triangle& t = mesh.triangles[uses[i].triangle()];
+      const std::size_t k = uses[i].corner % 3;
+      const Index a = t[k], b = t[(k + 1) % 3];
+      if (from[b]) return std::nullopt;
+      from[b] = BoundaryStep{a, t[(k + 2) % 3],
+                             std::binary_search(opened.begin(), opened.end(), uses[i].edge)};
+    }
+    i = j;
+  }
+  std::vector<Loop> loops;
+  for (Index start = 0; start < from.size(); ++start) {
+    if (!from[start] || from[start]->seen) continue;
+    Loop loop;
+    bool all_opened = true;
+    for (Index v = start; from[v] && !from[v]->seen; v = from[v]->to) {
+      from[v]->seen = true;
+      all_opened = all_opened && from[v]->opened;
+      loop.vertices.push_back(v);
+      loop.opposite.push_back(from[v]->opposite);
+    }
+    if (all_opened) loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+// The triangles closing `loop`, or nothing when CGAL finds no complete triangulation (a loop
+// whose every fan has a degenerate triangle).
+std::optional<std::vector<Triangle>> triangulated(const TriangleMesh& mesh, const Loop& loop) {
+  std::vector<Kernel::Point_3> points, third;
+  for (std::size_t i = 0; i < loop.vertices.size(); ++i) {
+    const Vec3& p = mesh.vertices[loop.vertices[i]];
+    const Vec3& q = mesh.vertices[loop.opposite[i]];
+    points.emplace_back(p.x, p.y, p.z);
+    third.emplace_back(q.x, q.y, q.z);
+  }
+  std::vector<CGAL::Triple<int, int, int>> patch;
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(points, third,
+                                                           std::back_inserter(patch));
+  if (patch.size() + 2 != loop.vertices.size()) return std::nullopt;
+  std::vector<Triangle> triangles;
+  for (const auto& [a, b, c] : patch)
+    triangles.push_back({loop.vertices[a], loop.vertices[b], loop.vertices[c]});
+  return triangles;
+}
+
+}  // namespace
+
+ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> removed,
+                               const TopologyReport& input, bool oriented) {
+  const std::optional<std::vector<Loop>> loops = opened_loops(mesh, removed);
+  if (!loops || loops->empty()) return {};
+  const std::size_t before = mesh.triangles.size();
+  for (const Loop& loop : *loops) {
+    const std::optional<std::vector<Triangle>> patch = triangulated(mesh, loop);
+    if (!patch) {
+      mesh.triangles.resize(before);
+      return {};
+    }
+    mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
+  }
+  // A chord of one patch may be an edge the mesh has already, or two patches may share one:
+  // only a manifold with the input's topology is kept.
+  const std::vector<bool> may_bound(mesh.vertices.size(), true);
+  if (!find_output_defects(mesh, may_bound, oriented).empty() ||
+      !same_topology(analyze_topology(mesh), input)) {
+    mesh.triangles.resize(before);
+    return {};
+  }
+  return {loops->size(), mesh.triangles.size() - before};
+}
+
+}  // namespace cvtmesh

@@ -1,0 +1,139 @@
+// The last step's hole closing (remesh/close_holes): the holes make_manifold opened are closed on
+// their own vertices when that gives back the input's topology, and left as they are otherwise.
+// And an input that crosses itself, where refinement cannot converge, keeps its topology.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/topology.hpp"
+#include "remesh/close_holes.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using testing::add_quad;
+using testing::icosphere;
+using testing::torus;
+
+// Removes the triangles `pick` selects, returning them.
+template <class Pick>
+std::vector<Triangle> remove_triangles(TriangleMesh& mesh, Pick pick) {
+  std::vector<Triangle> removed;
+  std::erase_if(mesh.triangles, [&](const Triangle& t) {
+    if (!pick(t)) return false;
+    removed.push_back(t);
+    return true;
+  });
+  return removed;
+}
+
+Vec3 centroid(const TriangleMesh& mesh, const Triangle& t) {
+  return (1.0 / 3) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
+}
+
+TEST(CloseOpenedHoles, HolesInAClosedSurfaceCloseOrientedWithTheInputsTopology) {
+  TriangleMesh sphere = icosphere(3);
+  const TopologyReport input = analyze_topology(sphere);
+  // Two caps off: two holes, χ 0.
+  const std::vector<Triangle> removed = remove_triangles(
+      sphere, [&](const Triangle& t) { return std::abs(centroid(sphere, t).z) > 0.8; });
+  ASSERT_EQ(analyze_topology(sphere).boundary_loops, 2u);
+  const std::size_t kept = sphere.triangles.size();
+  const ClosedHoles closed = close_opened_holes(sphere, removed, input, true);
+  EXPECT_EQ(closed.holes, 2u);
+  EXPECT_EQ(sphere.triangles.size(), kept + closed.triangles);
+  const TopologyReport t = analyze_topology(sphere);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_TRUE(same_topology(t, input));
+}
+
+TEST(CloseOpenedHoles, NothingChangesWhenClosingWouldNotGiveTheTopologyBack) {
+  // A band cut out of a torus leaves a tube with two loops; closing both makes a sphere.
+  TriangleMesh ring = torus(1.0, 0.3, 40, 12);
+  const TopologyReport input = analyze_topology(ring);
+  const std::vector<Triangle> removed = remove_triangles(ring, [&](const Triangle& t) {
+    const Vec3 c = centroid(ring, t);
+    return c.x > 0 && std::abs(c.y) < 0.2;
+  });
+  ASSERT_EQ(analyze_topology(ring).boundary_loops, 2u);
+  const std::vector<Triangle> before = ring.triangles;
+  EXPECT_EQ(close_opened_holes(ring, removed, input, true).holes, 0u);
+  EXPECT_EQ(ring.triangles, before);
+}
+
+TEST(CloseOpenedHoles, AnInputsOwnBoundaryStaysOpen) {
+  // The lower half of a sphere (one boundary loop of its own) with a hole cut at the bottom: the
+  // hole closes, the rim is no opened edge and stays a boundary.
+  TriangleMesh cup = icosphere(3);
+  remove_triangles(cup, [&](const Triangle& t) { return centroid(cup, t).z > 0; });
+  const TopologyReport input = analyze_topology(cup);
+  ASSERT_EQ(input.boundary_loops, 1u);
+  const std::vector<Triangle> removed =
+      remove_triangles(cup, [&](const Triangle& t) { return centroid(cup, t).z < -0.85; });
+  ASSERT_EQ(analyze_topology(cup).boundary_loops, 2u);
+  EXPECT_EQ(close_opened_holes(cup, removed, input, true).holes, 1u);
+  EXPECT_TRUE(same_topology(analyze_topology(cup), input));
+  // Told that the rim's triangles were removed too, the rim would be closed as well, and the
+  // topology would differ from the cup's: nothing is closed.
+  TriangleMesh cup2 = icosphere(3);
+  const std::vector<Triangle> upper =
+      remove_triangles(cup2, [&](const Triangle& t) { return centroid(cup2, t).z > 0; });
+  EXPECT_EQ(close_opened_holes(cup2, upper, input, true).holes, 0u);
+}
+
+// A closed tube of radius r around the curve (x, y) = (cos t, a sin t cos t), a figure eight: a
+// torus that passes through itself where the curve crosses itself, and where the curve's two
+// branches are closer than 2 r, along their length.
+TriangleMesh figure_eight_tube(double a, double r, int nu, int nv) {
+  TriangleMesh m;
+  const double tau = 2 * std::numbers::pi;
+  for (int i = 0; i < nu; ++i) {
+    const double t = tau * i / nu;
+    const Vec3 c{std::cos(t), a * std::sin(t) * std::cos(t), 0};
+    const Vec3 d{-std::sin(t), a * std::cos(2 * t), 0};
+    const double len = std::hypot(d.x, d.y);
+    const Vec3 n{-d.y / len, d.x / len, 0};
+    for (int j = 0; j < nv; ++j) {
+      const double v = tau * j / nv;
+      m.vertices.push_back(c + r * std::cos(v) * n + Vec3{0, 0, r * std::sin(v)});
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
+TEST(SelfCrossingInput, ATubePressedThroughItselfKeepsItsTopology) {
+  // The lobes are 0.15 wide at most and the tube 0.3 thick: it runs through itself nearly all
+  // along. Without rounds of topology control the last step removes triangles there (11 at 400
+  // vertices, 12 at 1,500) and closes the holes; with them, the output keeps the topology too.
+  const TriangleMesh tube = figure_eight_tube(0.15, 0.15, 240, 24);
+  const TopologyReport input = analyze_topology(tube);
+  ASSERT_EQ(input.euler_characteristic, 0);
+  for (const int rounds : {0, 12}) {
+    for (const std::size_t count : {400u, 1500u}) {
+      SCOPED_TRACE(::testing::Message() << count << " vertices, " << rounds << " rounds");
+      RemeshSettings s;
+      s.vertices = count;
+      s.topology_rounds = rounds;
+      const RemeshResult r = remesh(tube, s);
+      const TopologyReport t = analyze_topology(r.mesh);
+      EXPECT_TRUE(t.is_manifold());
+      EXPECT_TRUE(t.consistently_oriented);
+      EXPECT_TRUE(same_topology(t, input))
+          << "χ " << t.euler_characteristic << ", loops " << t.boundary_loops << "; "
+          << r.triangles_removed << " triangles removed, " << r.holes_closed << " holes closed";
+      EXPECT_EQ(r.holes_closed > 0, r.triangles_removed > 0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cvtmesh
