@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "cvtmesh/remesh.hpp"
@@ -31,6 +32,8 @@ std::vector<Triangle> remove_triangles(TriangleMesh& mesh, Pick pick) {
   return removed;
 }
 
+const std::function<Vec3(const Vec3&)> kNoProjection = [](const Vec3& p) { return p; };
+
 Vec3 centroid(const TriangleMesh& mesh, const Triangle& t) {
   return (1.0 / 3) * (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]);
 }
@@ -43,10 +46,38 @@ TEST(CloseOpenedHoles, HolesInAClosedSurfaceCloseOrientedWithTheInputsTopology) 
       sphere, [&](const Triangle& t) { return std::abs(centroid(sphere, t).z) > 0.8; });
   ASSERT_EQ(analyze_topology(sphere).boundary_loops, 2u);
   const std::size_t kept = sphere.triangles.size();
-  const ClosedHoles closed = close_opened_holes(sphere, removed, input, true);
+  const ClosedHoles closed = close_opened_holes(sphere, removed, input, true, kNoProjection);
   EXPECT_EQ(closed.holes, 2u);
   EXPECT_EQ(sphere.triangles.size(), kept + closed.triangles);
   const TopologyReport t = analyze_topology(sphere);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_TRUE(same_topology(t, input));
+}
+
+TEST(CloseOpenedHoles, AHoleWhoseOnlyChordTheMeshHasAlreadyClosesWithAFan) {
+  // A pillow on the loop a b c d: a pyramid with apex e above, two triangles below that share
+  // b-d. With the pyramid removed, a, b, c collinear leave b-d the only chord, which the bottom
+  // has already: the hole closes by a fan around a new vertex.
+  TriangleMesh pillow;
+  pillow.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0.5, 1}};
+  const Index a = 0, b = 1, c = 2, d = 3, e = 4;
+  pillow.triangles = {{b, a, d}, {d, c, b}};
+  const std::vector<Triangle> removed = {{a, b, e}, {b, c, e}, {c, d, e}, {d, a, e}};
+  TriangleMesh whole = pillow;
+  whole.triangles.insert(whole.triangles.end(), removed.begin(), removed.end());
+  const TopologyReport input = analyze_topology(whole);
+  ASSERT_TRUE(input.is_manifold() && input.is_closed());
+  int projected = 0;
+  const ClosedHoles closed = close_opened_holes(pillow, removed, input, true, [&](const Vec3& p) {
+    ++projected;
+    return p;
+  });
+  EXPECT_EQ(closed.holes, 1u);
+  EXPECT_EQ(closed.vertices, 1u);
+  EXPECT_EQ(closed.triangles, 4u);
+  EXPECT_EQ(projected, 1);
+  const TopologyReport t = analyze_topology(pillow);
   EXPECT_TRUE(t.is_manifold());
   EXPECT_TRUE(t.consistently_oriented);
   EXPECT_TRUE(same_topology(t, input));
@@ -62,7 +93,7 @@ TEST(CloseOpenedHoles, NothingChangesWhenClosingWouldNotGiveTheTopologyBack) {
   });
   ASSERT_EQ(analyze_topology(ring).boundary_loops, 2u);
   const std::vector<Triangle> before = ring.triangles;
-  EXPECT_EQ(close_opened_holes(ring, removed, input, true).holes, 0u);
+  EXPECT_EQ(close_opened_holes(ring, removed, input, true, kNoProjection).holes, 0u);
   EXPECT_EQ(ring.triangles, before);
 }
 
@@ -76,14 +107,14 @@ TEST(CloseOpenedHoles, AnInputsOwnBoundaryStaysOpen) {
   const std::vector<Triangle> removed =
       remove_triangles(cup, [&](const Triangle& t) { return centroid(cup, t).z < -0.85; });
   ASSERT_EQ(analyze_topology(cup).boundary_loops, 2u);
-  EXPECT_EQ(close_opened_holes(cup, removed, input, true).holes, 1u);
+  EXPECT_EQ(close_opened_holes(cup, removed, input, true, kNoProjection).holes, 1u);
   EXPECT_TRUE(same_topology(analyze_topology(cup), input));
   // Told that the rim's triangles were removed too, the rim would be closed as well, and the
   // topology would differ from the cup's: nothing is closed.
   TriangleMesh cup2 = icosphere(3);
   const std::vector<Triangle> upper =
       remove_triangles(cup2, [&](const Triangle& t) { return centroid(cup2, t).z > 0; });
-  EXPECT_EQ(close_opened_holes(cup2, upper, input, true).holes, 0u);
+  EXPECT_EQ(close_opened_holes(cup2, upper, input, true, kNoProjection).holes, 0u);
 }
 
 // A closed tube of radius r around the curve (x, y) = (cos t, a sin t cos t), a figure eight: a

@@ -104,8 +104,9 @@ int run_remesh(RemeshOptions o) {
     fmt::print(stderr,
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "
                "topology control could not mend it (as where the input crosses itself); the {} "
-               "holes this opened were closed again with {} triangles, no vertex added\n",
-               o.output, r.triangles_removed, r.holes_closed, r.triangles_closing_holes);
+               "holes this opened were closed again with {} triangles and {} new vertices\n",
+               o.output, r.triangles_removed, r.holes_closed, r.triangles_closing_holes,
+               r.vertices_closing_holes);
   else if (r.triangles_removed > 0)
     fmt::print(stderr,
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "

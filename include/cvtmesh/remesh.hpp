@@ -123,12 +123,13 @@ struct RemeshResult {
   int mend_rounds = 0;
   // The last step: triangles removed at the defects the rounds could not mend (non-manifold
   // edges and vertices, folds), so that the output is always an oriented manifold. Each leaves
-  // a hole. Where closing all these holes on their own vertices gives back the input's topology
-  // and a manifold, they are closed (local re-triangulation: an input that crosses itself defeats
-  // refinement there); otherwise, when this is not 0, the output's topology differs from the
-  // input's.
+  // a hole. Where closing all these holes (on their own vertices, or by a fan around a new one
+  // where that would repeat an edge) gives back the input's topology and a manifold, they are
+  // closed (local re-triangulation: an input that crosses itself defeats refinement there);
+  // otherwise, when this is not 0, the output's topology differs from the input's.
   std::size_t triangles_removed = 0;
   std::size_t holes_closed = 0, triangles_closing_holes = 0;
+  std::size_t vertices_closing_holes = 0;  // centres of holes closed by a fan
   // Flat ears removed at the boundary (remesh/flat_ears): triangles whose two edges at one
   // vertex, not a corner, were boundary edges meeting at 160° or more. The boundary loop stays;
   // the vertex goes, and the links from it to its two neighbours count as missing.

@@ -273,6 +273,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.triangles_removed += part.triangles_removed;
   all.holes_closed += part.holes_closed;
   all.triangles_closing_holes += part.triangles_closing_holes;
+  all.vertices_closing_holes += part.vertices_closing_holes;
   all.flat_ears_removed += part.flat_ears_removed;
   all.time_limit_reached |= part.time_limit_reached;
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "features/edge_uses.hpp"
@@ -92,16 +93,51 @@ std::optional<std::vector<Triangle>> triangulated(const TriangleMesh& mesh, cons
 }  // namespace
 
 ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> removed,
-                               const TopologyReport& input, bool oriented) {
+                               const TopologyReport& input, bool oriented,
+                               const std::function<Vec3(const Vec3&)>& onto_surface) {
   const std::optional<std::vector<Loop>> loops = opened_loops(mesh, removed);
   if (!loops || loops->empty()) return {};
-  const std::size_t before = mesh.triangles.size();
+  const std::size_t before = mesh.triangles.size(), vertices_before = mesh.vertices.size();
+  std::set<Edge> edges;  // of the mesh and the patches so far
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) edges.insert(edge_of(t[k], t[(k + 1) % 3]));
+  auto restore = [&] {
+    mesh.triangles.resize(before);
+    mesh.vertices.resize(vertices_before);
+  };
   for (const Loop& loop : *loops) {
-    const std::optional<std::vector<Triangle>> patch = triangulated(mesh, loop);
+    std::optional<std::vector<Triangle>> patch = triangulated(mesh, loop);
     if (!patch) {
-      mesh.triangles.resize(before);
+      restore();
       return {};
     }
+    // A chord the mesh has already (its two ends joined around the other side of a thin part)
+    // would make that edge non-manifold: then a fan around a new vertex closes the loop, which
+    // has no chord (its position: the loop's centroid, onto the surface).
+    const auto chord_reused = [&](const Triangle& t) {
+      for (int k = 0; k < 3; ++k) {
+        const Index a = t[k], b = t[(k + 1) % 3];
+        const std::size_t i =
+            std::find(loop.vertices.begin(), loop.vertices.end(), a) - loop.vertices.begin();
+        const bool loop_edge =
+            loop.vertices[(i + 1) % loop.vertices.size()] == b ||
+            loop.vertices[(i + loop.vertices.size() - 1) % loop.vertices.size()] == b;
+        if (!loop_edge && edges.contains(edge_of(a, b))) return true;
+      }
+      return false;
+    };
+    if (std::any_of(patch->begin(), patch->end(), chord_reused)) {
+      Vec3 centroid;
+      for (const Index v : loop.vertices) centroid = centroid + mesh.vertices[v];
+      const auto centre = static_cast<Index>(mesh.vertices.size());
+      mesh.vertices.push_back(
+          onto_surface((1.0 / static_cast<double>(loop.vertices.size())) * centroid));
+      patch->clear();
+      for (std::size_t i = 0; i < loop.vertices.size(); ++i)
+        patch->push_back({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()], centre});
+    }
+    for (const Triangle& t : *patch)
+      for (int k = 0; k < 3; ++k) edges.insert(edge_of(t[k], t[(k + 1) % 3]));
     mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
   }
   // A chord of one patch may be an edge the mesh has already, or two patches may share one:
@@ -109,10 +145,10 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   const std::vector<bool> may_bound(mesh.vertices.size(), true);
   if (!find_output_defects(mesh, may_bound, oriented).empty() ||
       !same_topology(analyze_topology(mesh), input)) {
-    mesh.triangles.resize(before);
+    restore();
     return {};
   }
-  return {loops->size(), mesh.triangles.size() - before};
+  return {loops->size(), mesh.triangles.size() - before, mesh.vertices.size() - vertices_before};
 }
 
 }  // namespace cvtmesh

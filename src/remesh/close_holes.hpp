@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 
 #include "cvtmesh/mesh.hpp"
@@ -16,15 +17,18 @@ namespace cvtmesh {
 
 struct ClosedHoles {
   std::size_t holes = 0, triangles = 0;
+  std::size_t vertices = 0;  // added at the centres of holes closed by a fan
 };
 
 // A hole here is a boundary loop of `mesh` all of whose edges were shared with a triangle of
-// `removed`. Each is triangulated on its own vertices, no vertex added (CGAL's hole filling:
-// Liepa's minimum of the largest dihedral angle, then of the area, with the removed
-// neighbours' dihedrals counted). The triangles are kept only when every hole is closed and the
-// result is a manifold (oriented when `oriented`) with the topology of `input`; otherwise `mesh`
-// is left as it was and nothing is reported.
+// `removed`. Each is triangulated on its own vertices (CGAL's hole filling: Liepa's minimum of
+// the largest dihedral angle, then of the area, with the kept neighbours' dihedrals counted),
+// or, where that would use an edge the mesh has already, by a fan around a new vertex at
+// `onto_surface` of the loop's centroid. The triangles are kept only when every hole is closed
+// and the result is a manifold (oriented when `oriented`) with the topology of `input`;
+// otherwise `mesh` is left as it was and nothing is reported.
 ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> removed,
-                               const TopologyReport& input, bool oriented);
+                               const TopologyReport& input, bool oriented,
+                               const std::function<Vec3(const Vec3&)>& onto_surface);
 
 }  // namespace cvtmesh

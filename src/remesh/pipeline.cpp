@@ -282,10 +282,12 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
         make_manifold(result.mesh, result.input_topology.orientable);
     result.triangles_removed = removed.size();
     if (!removed.empty()) {
-      const ClosedHoles closed = close_opened_holes(result.mesh, removed, result.input_topology,
-                                                    result.input_topology.orientable);
+      const ClosedHoles closed = close_opened_holes(
+          result.mesh, removed, result.input_topology, result.input_topology.orientable,
+          [&](const Vec3& p) { return projector->nearest(p).point; });
       result.holes_closed = closed.holes;
       result.triangles_closing_holes = closed.triangles;
+      result.vertices_closing_holes = closed.vertices;
     }
   }
   // The mesh's first vertices are the seeds, by id (PolishedOutput).

@@ -11,13 +11,15 @@ namespace cvtmesh {
 
 namespace {
 
-// Whether an output has its input's topology: the same components, Euler characteristics and
-// boundary loops, and no defect the input did not have (a manifold input gives a manifold).
-bool topology_kept(const RemeshResult& r) {
+// How well an output keeps its input's topology: 2 when it has the same components, Euler
+// characteristics and boundary loops, and no defect the input did not have (a manifold input
+// gives a manifold) without the last step's help; 1 when the last step removed triangles and
+// closing the holes gave the topology back; 0 when the topology differs.
+int topology_kept(const RemeshResult& r) {
   const TopologyReport out = analyze_topology(r.mesh);
   const TopologyReport& in = r.input_topology;
-  return r.triangles_removed == 0 && same_topology(out, in) &&
-         (out.is_manifold() || !in.is_manifold());
+  if (!same_topology(out, in) || (!out.is_manifold() && in.is_manifold())) return 0;
+  return r.triangles_removed == 0 ? 2 : 1;
 }
 
 }  // namespace
@@ -27,7 +29,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   UnitRemesh first = remesh_unit(input, settings);
   const RemeshResult& r = first.result;
   if (settings.mode == CvtMode::rcvt || !settings.features.sharp_edges || r.time_limit_reached ||
-      topology_kept(r))
+      topology_kept(r) == 2)
     return first;
   RemeshSettings plain = settings;
   plain.features.sharp_edges = false;
@@ -43,7 +45,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   }
   UnitRemesh second = remesh_unit(input, plain);
   RemeshResult& s = second.result;
-  if (!topology_kept(s)) return first;
+  if (topology_kept(s) <= topology_kept(r)) return first;
   s.feature_edges_dropped = std::move(dropped);
   s.iterations += r.iterations;
   s.rvd_evaluations += r.rvd_evaluations;

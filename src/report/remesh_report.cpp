@@ -43,6 +43,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["triangles_removed"] = r.triangles_removed;
   j["holes_closed"] = r.holes_closed;
   j["triangles_closing_holes"] = r.triangles_closing_holes;
+  j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
   j["vertices_added"] = r.vertices_added;
@@ -112,8 +113,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   if (r.triangles_removed > 0)
     text += fmt::format(
         "  last step {} triangles removed at defects the rounds left; {} holes this opened "
-        "closed again with {} triangles on their own vertices\n",
-        r.triangles_removed, r.holes_closed, r.triangles_closing_holes);
+        "closed again with {} triangles and {} new vertices\n",
+        r.triangles_removed, r.holes_closed, r.triangles_closing_holes, r.vertices_closing_holes);
   return report;
 }
 
