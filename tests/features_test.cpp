@@ -172,6 +172,40 @@ TEST(Features, ShortCreasesFreeAtBothEndsAreDroppedUnlessForced) {
   EXPECT_EQ(detect_features(cube_with_ridge(), s).curves.size(), 13u);
 }
 
+// A cube (side 2, 32 grid cells a side) whose top face steps up by `rise` past x = 1/16: the
+// grid cells between x = 0 and x = 1/16 make a sloping strip, between two creases that fold by
+// atan(16 rise) each.
+TriangleMesh cube_with_step(double rise) {
+  TriangleMesh m = testing::cube(32);
+  for (Vec3& p : m.vertices)
+    if (p.z == 1 && p.x > 0.05) p.z += rise;
+  return m;
+}
+
+// The edges of `f` on the top face's step (both ends at x = 0, or both at x = 1/16, above z = 1
+// and off the cube's sides).
+std::size_t step_edges(const TriangleMesh& m, const Features& f) {
+  std::size_t n = 0;
+  for (const Edge& e : f.edges) {
+    const Vec3 &a = m.vertices[e[0]], &b = m.vertices[e[1]];
+    n += a.z >= 1 && b.z >= 1 && a.x == b.x && (a.x == 0 || a.x == 0.0625) && std::abs(a.y) < 1 &&
+         std::abs(b.y) < 1;
+  }
+  return n;
+}
+
+TEST(Features, CreasesAcrossAStripTooNarrowForTheScaleAreNone) {
+  // The strip is sqrt(0.0625² + 0.125²) = 0.14 wide, its creases fold by 63° and are 2 long.
+  const TriangleMesh step = cube_with_step(0.125);
+  FeatureSettings s;
+  s.scale = 0.3;  // the strip is wider than 0.3 of it: both creases kept, 30 edges off the sides
+  EXPECT_EQ(step_edges(step, detect_features(step, s)), 60u);
+  s.scale = 0.8;  // narrower: neither
+  EXPECT_EQ(step_edges(step, detect_features(step, s)), 0u);
+  s.creases_at_scale = false;  // a feature angle given: kept whatever the scale
+  EXPECT_EQ(step_edges(step, detect_features(step, s)), 60u);
+}
+
 TEST(Features, TwinCurvesGoForTheShorterOrTheOneThatMustStay) {
   TriangleMesh m;
   m.vertices = {{0, 0, 0}, {1, 0.1, 0}, {2, 0, 0}, {1, -0.4, 0}};

@@ -13,10 +13,19 @@ namespace {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 constexpr std::size_t kMeasuredEdges = 9;  // per curve: enough for a vote, cheap on long curves
+// The narrowest side a crease may have, against the scale (see is_crease).
+constexpr double kNarrowestSide = 0.3;
 
 Vec3 raw_normal(const TriangleMesh& mesh, std::size_t t) {
   const auto [a, b, c] = mesh.corners(t);
   return cross(b - a, c - a);
+}
+
+double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double dd = dot(d, d);
+  const double t = dd > 0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
+  return distance(p, a + t * d);
 }
 
 double angle_deg(const Vec3& u, const Vec3& v) {
@@ -79,6 +88,33 @@ CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& ce
   return s;
 }
 
+double CreaseScale::side_width(std::size_t first, const Vec3& a, const Vec3& b,
+                               double radius) const {
+  // Triangles joined by edges that pass within `radius` of the centre: unlike centroids, this
+  // reaches across the long slivers of a coarse CAD tessellation, whose far corners can lie
+  // near the crease however wide the face.
+  const Vec3 centre = 0.5 * (a + b), along = b - a;
+  const double length = norm(along);
+  double width = 0;
+  std::vector<std::size_t> stack{first};
+  std::unordered_set<std::size_t> seen{first};
+  while (!stack.empty()) {
+    const std::size_t t = stack.back();
+    stack.pop_back();
+    const std::array<Vec3, 3> corners = mesh_.corners(t);
+    for (int k = 0; k < 3; ++k) {
+      width = std::max(width, norm(cross(along, corners[k] - a)) / length);
+      const std::size_t u = across(t, k);
+      if (u == kNone || seen.contains(u) ||
+          distance_to_segment(centre, corners[k], corners[(k + 1) % 3]) > radius)
+        continue;
+      seen.insert(u);
+      stack.push_back(u);
+    }
+  }
+  return width;
+}
+
 CreaseScale::Measure CreaseScale::measure(const Edge& edge, double radius) const {
   const auto first = std::lower_bound(uses_.begin(), uses_.end(), edge,
                                       [](const EdgeUse& u, const Edge& e) { return u.edge < e; });
@@ -89,9 +125,11 @@ CreaseScale::Measure CreaseScale::measure(const Edge& edge, double radius) const
   const auto k0 = static_cast<int>(first->corner % 3);
   const Triangle& a = mesh_.triangles[t0];
   const bool same_direction = runs_forward(mesh_.triangles[t1], a[k0], a[(k0 + 1) % 3]);
-  const Vec3 centre = 0.5 * (mesh_.vertices[edge[0]] + mesh_.vertices[edge[1]]);
+  const Vec3 &p = mesh_.vertices[edge[0]], &q = mesh_.vertices[edge[1]];
+  const Vec3 centre = 0.5 * (p + q);
   const Side s0 = side(t0, false, centre, radius), s1 = side(t1, same_direction, centre, radius);
-  return {angle_deg(s0.normal_sum, s1.normal_sum), std::max(s0.roughness_deg, s1.roughness_deg)};
+  return {angle_deg(s0.normal_sum, s1.normal_sum), std::max(s0.roughness_deg, s1.roughness_deg),
+          std::min(side_width(t0, p, q, radius), side_width(t1, p, q, radius))};
 }
 
 bool CreaseScale::is_crease(const FeatureCurve& curve, double scale, double angle_deg) const {
@@ -102,7 +140,8 @@ bool CreaseScale::is_crease(const FeatureCurve& curve, double scale, double angl
     const std::size_t k = (2 * i + 1) * edges / (2 * measured);  // spread along the curve
     const Edge e = edge_of(curve.vertices[k], curve.vertices[(k + 1) % curve.vertices.size()]);
     const Measure m = measure(e, scale);
-    passed += m.fold_deg >= angle_deg && m.roughness_deg <= angle_deg / 6;
+    passed += m.fold_deg >= angle_deg && m.roughness_deg <= angle_deg / 6 &&
+              m.width >= kNarrowestSide * scale;
   }
   return 2 * passed >= measured;
 }

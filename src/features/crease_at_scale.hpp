@@ -23,16 +23,20 @@ class CreaseScale {
   // For an edge of exactly two triangles, the surface within `radius` of its midpoint on each
   // side (reached across non-barrier edges): the angle between the two sides' area-weighted
   // normals (the fold seen at that scale), and the sides' roughness, the larger of their
-  // area-weighted mean angles between a triangle's normal and its side's normal. Degrees.
+  // area-weighted mean angles between a triangle's normal and its side's normal. Degrees. And
+  // the narrower side's width: how far its triangles' corners reach from the edge's line.
   struct Measure {
     double fold_deg = 0;
     double roughness_deg = 0;
+    double width = 0;
   };
   Measure measure(const Edge& edge, double radius) const;
 
   // A curve (its input vertex ids, closed or not) is a crease at `scale` when at least half of
   // its measured edges (up to 9, spread along it) fold by at least `angle_deg` at that scale
-  // with sides no rougher than a sixth of it (10° at the default 60°).
+  // with sides no rougher than a sixth of it (10° at the default 60°), and no narrower than
+  // 0.3 `scale` (a strip between two creases, such as a narrow chamfer or step, whose triangles,
+  // with seeds `scale` apart on both its curves, would have angles under atan(0.6) = 31°).
   bool is_crease(const FeatureCurve& curve, double scale, double angle_deg) const;
 
  private:
@@ -41,6 +45,9 @@ class CreaseScale {
     double roughness_deg;
   };
   Side side(std::size_t first, bool flip, const Vec3& centre, double radius) const;
+  // How far from the line through a and b the surface on first's side reaches, within `radius`
+  // of their midpoint (the side ends at the barrier: another crease).
+  double side_width(std::size_t first, const Vec3& a, const Vec3& b, double radius) const;
   // The triangle across t's edge k = (t[k], t[k+1]), or none for an edge of other than two
   // triangles or on the barrier.
   std::size_t across(std::size_t t, int k) const { return across_[3 * t + k]; }
