@@ -134,6 +134,10 @@ struct RemeshResult {
   // vertex, not a corner, were boundary edges meeting at 160° or more. The boundary loop stays;
   // the vertex goes, and the links from it to its two neighbours count as missing.
   std::size_t flat_ears_removed = 0;
+  // Surface vertices of three triangles removed for the triangle of their three neighbours,
+  // where that is better shaped (remesh/valence_three): how topology control's seeds next to
+  // others often end. The topology stays; so may the count of vertices asked for not.
+  std::size_t valence_three_removed = 0;
   // The output's last touch, after all the above: edges flipped between nearly coplanar
   // triangles and vertices moved along the surface, around badly shaped triangles, each only
   // where the worst triangle it touches gets better. Neither changes the topology; feature,

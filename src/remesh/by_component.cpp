@@ -275,6 +275,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.triangles_closing_holes += part.triangles_closing_holes;
   all.vertices_closing_holes += part.vertices_closing_holes;
   all.flat_ears_removed += part.flat_ears_removed;
+  all.valence_three_removed += part.valence_three_removed;
   all.time_limit_reached |= part.time_limit_reached;
 }
 

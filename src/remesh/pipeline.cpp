@@ -26,6 +26,7 @@
 #include "remesh/improve_shapes.hpp"
 #include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
+#include "remesh/valence_three.hpp"
 #include "sizing/size_field.hpp"
 #include "system/elapsed.hpp"
 #include "system/memory_budget.hpp"
@@ -98,6 +99,25 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
         support[it->second] = {curve ? Kind::curve : Kind::fixed, constraints.curve[s]};
       }
   return support;
+}
+
+// Drops the vertices no triangle uses, and renumbers the rest in `r`'s mesh, vertices added and
+// feature edges.
+void drop_unused_vertices(RemeshResult& r) {
+  const std::vector<bool> used = used_vertices(r.mesh);
+  std::vector<Index> new_id(used.size());
+  std::vector<Vec3> kept;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (used[v]) {
+      new_id[v] = static_cast<Index>(kept.size());
+      kept.push_back(r.mesh.vertices[v]);
+    }
+  r.mesh.vertices = std::move(kept);
+  for (Triangle& t : r.mesh.triangles)
+    for (Index& v : t) v = new_id[v];
+  std::erase_if(r.vertices_added, [&](Index v) { return !used[v]; });
+  for (Index& v : r.vertices_added) v = new_id[v];
+  for (Edge& e : r.feature_edges) e = {new_id[e[0]], new_id[e[1]]};
 }
 
 // One output size at most; none only for initial seeds (their count is the size) or target
@@ -308,12 +328,18 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     result.feature_edges_missing = wanted.size() - result.feature_edges.size();
   }
   // Last, as it moves vertices off the seeds' positions (which the matching above needs).
-  const ShapeImprovement shapes = improve_shapes(
-      result.mesh, *projector, &*curves,
-      vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges),
-      result.feature_edges, settings.shape_sweeps);
+  const std::vector<VertexSupport> supports =
+      vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges);
+  const ShapeImprovement shapes = improve_shapes(result.mesh, *projector, &*curves, supports,
+                                                 result.feature_edges, settings.shape_sweeps);
   result.shape_flips = shapes.flips;
   result.shape_moves = shapes.moves;
+  // Last of all, as a vertex of three triangles is often what the flips and moves leave.
+  std::vector<bool> removable;
+  for (const VertexSupport& s : supports)
+    removable.push_back(s.kind == VertexSupport::Kind::surface);
+  result.valence_three_removed = remove_valence_three(result.mesh, removable);
+  if (result.valence_three_removed > 0) drop_unused_vertices(result);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);

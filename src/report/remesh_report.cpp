@@ -45,6 +45,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
+  j["valence_three_removed"] = r.valence_three_removed;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
   j["vertices_added"] = r.vertices_added;
   j["links_flipped"] = r.links_flipped;
