@@ -140,8 +140,8 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
       for (int k = 0; k < 3; ++k) edges.insert(edge_of(t[k], t[(k + 1) % 3]));
     mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
   }
-  // A chord of one patch may be an edge the mesh has already, or two patches may share one:
-  // only a manifold with the input's topology is kept.
+  // Whatever the patches made (a fold against a kept triangle, patches meeting at a vertex of
+  // two loops), only a manifold with the input's topology is kept.
   const std::vector<bool> may_bound(mesh.vertices.size(), true);
   if (!find_output_defects(mesh, may_bound, oriented).empty() ||
       !same_topology(analyze_topology(mesh), input)) {
