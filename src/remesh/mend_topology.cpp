@@ -54,15 +54,23 @@ std::vector<Edge> link_seeds(const std::vector<FeatureLink>& links) {
   return seeds;
 }
 
-// New surface seeds at the nearest surface points of `points`, unless a seed is there already.
-// Returns how many came in.
+// New surface seeds at the nearest surface points of `points`, unless a seed is there already,
+// or one of those added since `first_new` is nearer than a millionth of the spacing: two pieces'
+// farthest points may be the same RVD vertex computed from two cells, a rounding apart, and two
+// such seeds made femur.off at 10k a triangle of area 1e-22. Returns how many came in.
 std::size_t add_surface_seeds(const MendContext& m, const std::vector<Vec3>& points,
-                              std::vector<Vec3>& seeds, SeedConstraints& constraints) {
+                              std::vector<Vec3>& seeds, SeedConstraints& constraints,
+                              std::size_t first_new) {
   std::set<Vec3> occupied(seeds.begin(), seeds.end());
+  const double apart = 1e-6 * m.spacing.spacing();
   std::size_t added = 0;
   for (const Vec3& point : points) {
     const Vec3 p = m.projector.nearest(point).point;
-    if (!occupied.insert(p).second) continue;
+    if (occupied.contains(p) ||
+        std::any_of(seeds.begin() + static_cast<std::ptrdiff_t>(first_new), seeds.end(),
+                    [&](const Vec3& s) { return distance(s, p) <= apart; }))
+      continue;
+    occupied.insert(p);
     seeds.push_back(p);
     if (!constraints.empty()) constraints.append(SeedConstraints::Kind::surface);
     ++added;
@@ -278,8 +286,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
         report.links_mended += mended;
         changed += mended;
       }
-      const std::size_t islands = add_surface_seeds(m, found.islands, seeds, constraints);
-      const std::size_t refined = add_surface_seeds(m, found.refinement, seeds, constraints);
+      const std::size_t first_new = seeds.size();
+      const std::size_t islands =
+          add_surface_seeds(m, found.islands, seeds, constraints, first_new);
+      const std::size_t refined =
+          add_surface_seeds(m, found.refinement, seeds, constraints, first_new);
       report.islands += islands;
       report.refined += refined;
       changed += islands + refined;
