@@ -14,6 +14,7 @@
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/unit_vector.hpp"
+#include "remesh/worst_shape.hpp"
 
 namespace cvtmesh {
 
@@ -56,29 +57,6 @@ constexpr int kMaxSearchSteps = 64;
 constexpr int kDirections = 8;
 // The search runs only while the star's worst Q or θmin / 60° is under this.
 constexpr double kSearchBelow = 0.7;
-
-// The worst Q and the worst θmin (in units of 60°: both are 1 when equilateral) of a few
-// triangles, and the smaller of the two as one score.
-struct Worst {
-  double quality = 1;
-  double angle = 1;
-
-  void add(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const TriangleShape s = triangle_shape(a, b, c);
-    quality = std::min(quality, s.quality);
-    angle = std::min(angle, s.min_angle / 60);
-  }
-  double score() const { return std::min(quality, angle); }
-  // Whether this (the triangles a change makes) is better than `o` (those it replaces): a
-  // better score, and neither Q nor θmin under both o's and the mesh's worst at the start
-  // (`floor`), so that the mesh's own Qmin and θmin never fall below where they were, whichever
-  // triangle holds them. (A floor raised as they rise leaves the search less room: on the
-  // corpus at 1k it did worse on 3 meshes, better on 1.)
-  bool better_than(const Worst& o, const Worst& floor) const {
-    return score() > o.score() && quality >= std::min(o.quality, floor.quality) &&
-           angle >= std::min(o.angle, floor.angle);
-  }
-};
 
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const TriangleShape s = triangle_shape(a, b, c);
@@ -301,7 +279,7 @@ class ShapeImprover {
     // The pair's plane, weighted by area (a sliver's normal says little), must hold both new
     // triangles and every old one that is not a sliver.
     const Vec3 n = unit_or_zero(cross(p[b] - p[a], p[c] - p[a]) + cross(p[a] - p[b], p[d] - p[b]));
-    Worst before, after;
+    WorstShape before, after;
     before.add(p[a], p[b], p[c]);
     before.add(p[b], p[a], p[d]);
     after.add(p[c], p[a], p[d]);
@@ -340,12 +318,12 @@ class ShapeImprover {
       normals.push_back(unit_normal(a, b, c));
       if (no_direction(normals.back())) return false;
     }
-    const Worst before = star_shape(v);
-    Worst best = before;
+    const WorstShape before = star_shape(v);
+    WorstShape best = before;
     // Where v would do better than `best`, with nothing folded or taken off the surface.
     const auto better_at = [&](const Vec3& q) {
       p[v] = q;
-      const Worst now = star_shape(v);
+      const WorstShape now = star_shape(v);
       const bool better = now.better_than(best, floor_) && keeps_surface(v, normals);
       p[v] = from;
       if (better) best = now;
@@ -427,8 +405,8 @@ class ShapeImprover {
   }
 
   // The worst shapes of the triangles at `v`.
-  Worst star_shape(Index v) const {
-    Worst worst;
+  WorstShape star_shape(Index v) const {
+    WorstShape worst;
     for (Index t : around_[v]) {
       const auto [a, b, c] = mesh_.corners(t);
       worst.add(a, b, c);
@@ -467,7 +445,7 @@ class ShapeImprover {
   const std::vector<Edge>& features_;
   const std::vector<Vec3> start_;           // the vertices where they were
   std::vector<double> start_gap_;           // per vertex, gap_around it then
-  Worst floor_;                             // the mesh's worst Q and θmin at the start
+  WorstShape floor_;                        // the mesh's worst Q and θmin at the start
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
 };
 

@@ -101,23 +101,14 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
   return support;
 }
 
-// Drops the vertices no triangle uses, and renumbers the rest in `r`'s mesh, vertices added and
-// feature edges.
+// Drops the vertices no triangle uses (repair_mesh), and renumbers the rest in `r`'s vertices
+// added and feature edges.
 void drop_unused_vertices(RemeshResult& r) {
-  const std::vector<bool> used = used_vertices(r.mesh);
-  std::vector<Index> new_id(used.size());
-  std::vector<Vec3> kept;
-  for (std::size_t v = 0; v < used.size(); ++v)
-    if (used[v]) {
-      new_id[v] = static_cast<Index>(kept.size());
-      kept.push_back(r.mesh.vertices[v]);
-    }
-  r.mesh.vertices = std::move(kept);
-  for (Triangle& t : r.mesh.triangles)
-    for (Index& v : t) v = new_id[v];
-  std::erase_if(r.vertices_added, [&](Index v) { return !used[v]; });
+  std::vector<Index> new_id;
+  repair_mesh(r.mesh, &new_id);
+  std::erase_if(r.vertices_added, [&](Index v) { return new_id[v] == kRemovedVertex; });
   for (Index& v : r.vertices_added) v = new_id[v];
-  for (Edge& e : r.feature_edges) e = {new_id[e[0]], new_id[e[1]]};
+  r.feature_edges = edges_after_repair(r.feature_edges, new_id);
 }
 
 // One output size at most; none only for initial seeds (their count is the size) or target

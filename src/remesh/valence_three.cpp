@@ -6,7 +6,7 @@
 #include <numbers>
 #include <set>
 
-#include "cvtmesh/quality.hpp"
+#include "remesh/worst_shape.hpp"
 
 namespace cvtmesh {
 
@@ -17,11 +17,6 @@ namespace {
 // (on the shared meshes at 1k, no Hausdorff distance changed by 0.002% of the diagonal).
 constexpr double kFlatness = 0.2;
 const double kTurnCos = std::cos(45 * std::numbers::pi / 180);
-
-double score(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const TriangleShape s = triangle_shape(a, b, c);
-  return std::min(s.quality, s.min_angle / 60);
-}
 
 Vec3 normal(const Vec3& a, const Vec3& b, const Vec3& c) {
   return cross(b - a, c - a);
@@ -73,17 +68,18 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     if (present.contains(key)) continue;
     const Vec3 &a = mesh.vertices[abc[0]], &b = mesh.vertices[abc[1]], &c = mesh.vertices[abc[2]];
     const Vec3& p = mesh.vertices[v];
-    double worst = 1;
+    WorstShape fan, merged;
+    merged.add(a, b, c);
     bool flat = true;
     const Vec3 n = normal(a, b, c);
     for (const auto& r : rim) {
       const Vec3 &x = mesh.vertices[r[0]], &y = mesh.vertices[r[1]];
-      worst = std::min(worst, score(p, x, y));
+      fan.add(p, x, y);
       flat = flat && turns_little(n, normal(p, x, y));
     }
     const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
     const double height = norm(n) > 0 ? std::abs(dot(p - a, n)) / norm(n) : 0;
-    if (!flat || height > kFlatness * longest || !(score(a, b, c) > worst)) continue;
+    if (!flat || height > kFlatness * longest || !(merged.score() > fan.score())) continue;
     for (const std::size_t t : around[v]) gone[t] = true;
     added.push_back({abc[0], abc[1], abc[2]});
     present.insert(key);
