@@ -20,9 +20,23 @@ namespace cvtmesh {
 
 namespace {
 
-// Triangles per chunk: fixed, so the chunking (and the reduction order of every sink) does not
-// depend on the thread count.
+// Input vertices per chunk of the owner walks: fixed, so where walks start from the kd-tree
+// does not depend on the thread count.
 constexpr std::size_t kChunkSize = 1024;
+
+// Polygons per chunk of the triangle traversal, about. A coarse input has many cells per
+// triangle (3torus.off: 46 triangles under 5k seeds), so chunks of a fixed triangle count would
+// leave it on one core. The chunking depends on the input and the seed count only; sinks add
+// up chunk after chunk in traversal order, so no result depends on it anyway.
+constexpr std::size_t kPolygonsPerChunk = 2048;
+
+// Triangles per chunk, from the polygon count of a well-spread tessellation: each triangle, plus
+// about 4 more per seed (a cell of about 6 sides spans several triangles' edges).
+std::size_t triangles_per_chunk(std::size_t triangles, std::size_t seeds) {
+  const double polygons_per_triangle = 1 + 4 * static_cast<double>(seeds) / triangles;
+  return std::max<std::size_t>(1,
+                               static_cast<std::size_t>(kPolygonsPerChunk / polygons_per_triangle));
+}
 
 // Nearest seeds stored per seed: enough for nearly every polygon of a centroidal tessellation
 // (about 6 Voronoi neighbours on a surface), few enough to find fast; the rest come from
@@ -278,7 +292,8 @@ TraversalStats RestrictedVoronoiDiagram::traverse(PolygonSink& sink) const {
 
 TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> sinks) const {
   const std::size_t triangles = impl_->surface->triangles.size();
-  const std::size_t chunks = (triangles + kChunkSize - 1) / kChunkSize;
+  const std::size_t chunk_size = triangles_per_chunk(triangles, impl_->seeds.size());
+  const std::size_t chunks = (triangles + chunk_size - 1) / chunk_size;
   for (PolygonSink* sink : sinks) sink->begin(chunks);
   tbb::enumerable_thread_specific<Scratch> scratch([&] {
     Scratch s;
@@ -301,8 +316,8 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
       });
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
-    const std::size_t end = std::min(triangles, (chunk + 1) * kChunkSize);
-    for (std::size_t t = chunk * kChunkSize; t < end; ++t)
+    const std::size_t end = std::min(triangles, (chunk + 1) * chunk_size);
+    for (std::size_t t = chunk * chunk_size; t < end; ++t)
       if (!impl_->flat(t)) impl_->clip_triangle(t, chunk, sinks, owners, s);
   });
   for (PolygonSink* sink : sinks) sink->end();
