@@ -67,6 +67,37 @@ TEST(Features, SharpTurnOfACurveIsACorner) {
   EXPECT_TRUE(detect_features(testing::disk(2, 4), s).corners.empty());
 }
 
+// A flat square plate of n × n grid cells (side 1) whose bottom row misses every `notch`-th
+// cell from the second on: each notch is a step of the rim one cell deep and wide, with four
+// sharp turns one cell apart, like the jagged rim of a scan's hole.
+TriangleMesh notched_plate(int n, int notch) {
+  TriangleMesh m;
+  auto id = [&](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.vertices.push_back({double(i) / n, double(j) / n, 0});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (j > 0 || i == 0 || i == n - 1 || i % notch != 0)
+        testing::add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
+TEST(Features, SharpTurnsCloserThanTheScaleAllowsAreNoCorners) {
+  const TriangleMesh plate = notched_plate(40, 4);  // 9 notches, 36 turns 1/40 apart
+  FeatureSettings s;
+  s.scale = 0.05;  // a cell is half the scale: every turn is a corner, with the plate's 4
+  EXPECT_EQ(detect_features(plate, s).corners.size(), 40u);
+  s.scale = 0.1;  // a quarter: under 0.3 of it, so only the plate's corners are left
+  const Features f = detect_features(plate, s);
+  EXPECT_EQ(f.corners.size(), 4u);
+  EXPECT_EQ(f.curves.size(), 4u);
+  s.scale = 3;  // the whole rim, 4.45 long, is under twice that: a small part's outline, kept
+  EXPECT_EQ(detect_features(plate, s).corners.size(), 40u);
+  s.scale = 0.1;
+  s.creases_at_scale = false;  // a feature angle given: every turn is a corner at any scale
+  EXPECT_EQ(detect_features(plate, s).corners.size(), 40u);
+}
+
 TEST(Features, NarrowestSectorIsTheAngleBetweenTwoFeaturesAtAVertex) {
   // The cube: 90° at each corner, between each two of its three creases.
   const TriangleMesh box = testing::cube(4);
@@ -377,6 +408,17 @@ TEST(RemeshFeatures, OpenDiskKeepsItsBoundary) {
 
 TEST(RemeshFeatures, OpenHemisphereKeepsItsBoundary) {
   expect_boundaries_kept(testing::hemisphere(24, 96), 1200);
+}
+
+TEST(RemeshFeatures, AJaggedRimFinerThanTheEdgesGivesNoNeedles) {
+  // Edges of about 0.054 (400 vertices on the unit plate) against notches 1/80 wide: kept as
+  // corners, the notches' turns would be output edges a quarter that long.
+  const TriangleMesh plate = notched_plate(80, 8);
+  const RemeshResult r = remesh_to(plate, 400);
+  EXPECT_EQ(r.features.corners.size(), 4u);
+  EXPECT_EQ(exact_corners(plate, r.features, r.mesh), 4u);
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(plate)));
+  EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 25.0);
 }
 
 TEST(RemeshFeatures, ClosedCylinderKeepsItsRims) {

@@ -27,7 +27,9 @@ struct FeatureSettings {
   // free at both ends (meeting no other feature) and shorter than 8 times it (a fold of an
   // organic model's polygons; CAD creases end where they meet other creases), or when another
   // curve joins the same two corners within half of it all along (twins: one is kept, the
-  // shorter). remesh sets it to its target edge length.
+  // shorter). With `creases_at_scale`, a sharp turn is a corner only where both its curves are
+  // at least 0.3 times it long (the jagged rim of a scan's hole). remesh sets it to its target
+  // edge length.
   double scale = 0;
   bool creases_at_scale = true;  // all but the length rule; off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.

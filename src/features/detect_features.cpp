@@ -10,11 +10,21 @@
 #include "features/crease_at_scale.hpp"
 #include "features/edge_uses.hpp"
 #include "features/twin_curves.hpp"
+#include "geometry/union_find.hpp"
 #include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
 
 namespace {
+
+// A sharp turn of a curve is a corner only if both its curves are at least this many output
+// edge lengths long. An edge this short beside edges of one length has angles under
+// 2 asin(0.15) = 17° opposite it. The rims of scans' holes are jagged, every other vertex a sharp
+// turn a fifth of an edge from the next (lion.off, stanford-bunny.obj at 5k: 5° kept as corners).
+constexpr double kShortestTurnCurve = 0.3;
+// ... unless all the feature curves it is connected to, together, are shorter than this many: the
+// rim of a small hole or the outline of a small part, whose corners are its shape.
+constexpr double kShortestJaggedNetwork = 2;
 
 Vec3 unit_normal(const TriangleMesh& mesh, std::size_t t) {
   const auto [a, b, c] = mesh.corners(t);
@@ -63,61 +73,92 @@ bool sharp_turn(const TriangleMesh& mesh, const Adjacency& adj, Index v, double 
   return lengths > 0 && dot(in, out) < cos_threshold * lengths;
 }
 
-// Corners and curves of the feature edges f.edges, with the user's corners among the corners.
-void chain(const TriangleMesh& mesh, double cos_threshold, const std::vector<Index>& user_corners,
-           Features& f) {
-  f.corners.clear();
-  f.curves.clear();
-  const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
-  std::vector<bool> corner(mesh.vertices.size(), false);
-  for (Index v : user_corners) corner[v] = true;
-  for (Index v = 0; v < mesh.vertices.size(); ++v) {
-    const std::size_t d = adj.degree(v);
-    corner[v] =
-        corner[v] || (d > 0 && d != 2) || (d == 2 && sharp_turn(mesh, adj, v, cos_threshold));
-    if (corner[v]) f.corners.push_back(v);
-  }
-
-  // Chains: from each corner along each of its edges; what is left are loops without corners.
-  std::vector<bool> used(adj.other.size(), false);  // per adjacency slot (directed edge)
-  auto slot = [&](Index from, Index to) {
-    const auto first = adj.other.begin() + static_cast<std::ptrdiff_t>(adj.start[from]);
-    const auto last = adj.other.begin() + static_cast<std::ptrdiff_t>(adj.start[from + 1]);
-    return adj.start[from] + static_cast<std::size_t>(std::lower_bound(first, last, to) - first);
-  };
-  auto walk = [&](Index from, Index to) {
-    FeatureCurve c;
-    c.vertices.push_back(from);
-    for (;;) {
-      used[slot(from, to)] = used[slot(to, from)] = true;
-      if (corner[to]) {
-        c.vertices.push_back(to);
-        return c;
-      }
-      if (to == c.vertices.front()) {  // back at the start of a loop
-        c.closed = true;
-        return c;
-      }
-      c.vertices.push_back(to);
-      const std::size_t s = adj.start[to];
-      const Index next = adj.other[s] == from ? adj.other[s + 1] : adj.other[s];
-      from = to, to = next;
-    }
-  };
-  for (Index v : f.corners)
-    for (std::size_t s = adj.start[v]; s < adj.start[v + 1]; ++s)
-      if (!used[s]) f.curves.push_back(walk(v, adj.other[s]));
-  for (Index v = 0; v < mesh.vertices.size(); ++v)
-    for (std::size_t s = adj.start[v]; s < adj.start[v + 1]; ++s)
-      if (!used[s]) f.curves.push_back(walk(v, adj.other[s]));
-}
-
 double curve_length(const TriangleMesh& mesh, const FeatureCurve& c) {
   double length = 0;
   for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
     length += distance(mesh.vertices[c.vertices[k]], mesh.vertices[c.vertices[k + 1]]);
   if (c.closed) length += distance(mesh.vertices[c.vertices.back()], mesh.vertices[c.vertices[0]]);
   return length;
+}
+
+// Per vertex, the total length of the feature edges connected to it.
+std::vector<double> network_lengths(const TriangleMesh& mesh, const std::vector<Edge>& edges) {
+  UnionFind sets(mesh.vertices.size());
+  for (const Edge& e : edges) sets.unite(e[0], e[1]);
+  std::vector<double> length(mesh.vertices.size(), 0);
+  for (const Edge& e : edges)
+    length[sets.find(e[0])] += distance(mesh.vertices[e[0]], mesh.vertices[e[1]]);
+  std::vector<double> result(mesh.vertices.size());
+  for (Index v = 0; v < mesh.vertices.size(); ++v) result[v] = length[sets.find(v)];
+  return result;
+}
+
+// Corners and curves of the feature edges f.edges, with the user's corners among the corners.
+// With `scale` > 0, a sharp turn is no corner where one of its curves is shorter than
+// kShortestTurnCurve times it (with both ends output vertices, that curve would be an output edge
+// this short), unless its network of curves is a small detail (kShortestJaggedNetwork).
+void chain(const TriangleMesh& mesh, double cos_threshold, double scale,
+           const std::vector<Index>& user_corners, Features& f) {
+  const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
+  std::vector<bool> corner(mesh.vertices.size(), false), turn(mesh.vertices.size(), false);
+  for (Index v : user_corners) corner[v] = true;
+  const std::vector<double> network =
+      scale > 0 ? network_lengths(mesh, f.edges) : std::vector<double>{};
+  for (Index v = 0; v < mesh.vertices.size(); ++v) {
+    const std::size_t d = adj.degree(v);
+    const bool sharp = !corner[v] && d == 2 && sharp_turn(mesh, adj, v, cos_threshold);
+    turn[v] = sharp && scale > 0 && network[v] >= kShortestJaggedNetwork * scale;
+    corner[v] = corner[v] || (d > 0 && d != 2) || sharp;
+  }
+  auto slot = [&](Index from, Index to) {
+    const auto first = adj.other.begin() + static_cast<std::ptrdiff_t>(adj.start[from]);
+    const auto last = adj.other.begin() + static_cast<std::ptrdiff_t>(adj.start[from + 1]);
+    return adj.start[from] + static_cast<std::size_t>(std::lower_bound(first, last, to) - first);
+  };
+  // Chains: from each corner along each of its edges; what is left are loops without corners.
+  auto chain_curves = [&] {
+    f.corners.clear();
+    f.curves.clear();
+    for (Index v = 0; v < mesh.vertices.size(); ++v)
+      if (corner[v]) f.corners.push_back(v);
+    std::vector<bool> used(adj.other.size(), false);  // per adjacency slot (directed edge)
+    auto walk = [&](Index from, Index to) {
+      FeatureCurve c;
+      c.vertices.push_back(from);
+      for (;;) {
+        used[slot(from, to)] = used[slot(to, from)] = true;
+        if (corner[to]) {
+          c.vertices.push_back(to);
+          return c;
+        }
+        if (to == c.vertices.front()) {  // back at the start of a loop
+          c.closed = true;
+          return c;
+        }
+        c.vertices.push_back(to);
+        const std::size_t s = adj.start[to];
+        const Index next = adj.other[s] == from ? adj.other[s + 1] : adj.other[s];
+        from = to, to = next;
+      }
+    };
+    for (Index v : f.corners)
+      for (std::size_t s = adj.start[v]; s < adj.start[v + 1]; ++s)
+        if (!used[s]) f.curves.push_back(walk(v, adj.other[s]));
+    for (Index v = 0; v < mesh.vertices.size(); ++v)
+      for (std::size_t s = adj.start[v]; s < adj.start[v + 1]; ++s)
+        if (!used[s]) f.curves.push_back(walk(v, adj.other[s]));
+  };
+  // Each pass turns at least one corner into a curve vertex, so this ends.
+  for (;;) {
+    chain_curves();
+    if (scale == 0) return;
+    bool changed = false;
+    for (const FeatureCurve& c : f.curves)
+      if (!c.closed && curve_length(mesh, c) < kShortestTurnCurve * scale)
+        for (const Index end : {c.vertices.front(), c.vertices.back()})
+          if (turn[end] && corner[end]) corner[end] = false, changed = true;
+    if (!changed) return;
+  }
 }
 
 // A crease free at both ends (it rises out of a smooth surface and dies back into it, meeting no
@@ -177,7 +218,9 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
   std::sort(f.edges.begin(), f.edges.end());
   f.edges.erase(std::unique(f.edges.begin(), f.edges.end()), f.edges.end());
 
-  chain(mesh, cos_threshold, settings.user_corners, f);
+  // As creases at the output's scale, only in the default mode (a forced angle forces both).
+  const double turn_scale = settings.creases_at_scale ? settings.scale : 0;
+  chain(mesh, cos_threshold, turn_scale, settings.user_corners, f);
   if (settings.scale > 0) {
     // Curves of sharp edges only that are no features at the output's scale go, and the rest is
     // chained again: a corner of a dropped curve may be an ordinary curve vertex now.
@@ -221,7 +264,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       std::erase_if(f.edges, [&](const Edge& e) {
         return std::binary_search(dropped.begin(), dropped.end(), e);
       });
-      chain(mesh, cos_threshold, settings.user_corners, f);
+      chain(mesh, cos_threshold, turn_scale, settings.user_corners, f);
     }
   }
   return f;
