@@ -177,8 +177,8 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,
                   "Rounds of topology control: seeds added where the output misses feature "
-                  "edges or differs in topology; the best round is kept; up to twice as many "
-                  "more where the topology still differs (0: none)")
+                  "edges or differs in topology; the best round is kept; up to three times as "
+                  "many more where the topology still differs (0: none)")
       ->default_val(12)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--optimizer", o->optimizer, "lbfgs or lloyd")

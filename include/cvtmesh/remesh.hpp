@@ -59,7 +59,7 @@ struct RemeshSettings {
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
   // The best output of all the rounds is kept; they stop early after 4 rounds in a row that
-  // found nothing better. Where they end without the input's topology, up to twice as many
+  // found nothing better. Where they end without the input's topology, up to three times as many
   // follow from the best round, refining every restricted cell that is not a disc, with the
   // seeds they add pinned (not polished). 0 turns the rounds off.
   int topology_rounds = 12;

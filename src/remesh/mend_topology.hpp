@@ -44,7 +44,7 @@ struct MendReport {
 // boundary tip given theirs (close_corner_tips). Returns the best of these outputs, by the
 // input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
 // links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
-// that round. Where the rounds end without the input's topology, up to 2 × `rounds` more start
+// that round. Where the rounds end without the input's topology, up to 3 × `rounds` more start
 // from the best round: they also refine every cell piece that is not a disc, and polishing no
 // longer moves the seeds they add.
 // Independent of the thread count.
