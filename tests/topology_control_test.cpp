@@ -11,6 +11,7 @@
 #include "cvt/cell_islands.hpp"
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
+#include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/topology.hpp"
@@ -502,9 +503,9 @@ TEST(HardCases, ATinyComponentBesideALargeOne) {
   expect_valid_remesh(concatenate(icosphere(3), fan), 500);
 }
 
-// Known failure, disabled: the output is a manifold sphere (χ 2 against 0), because the cells
-// around the hole are annuli in one piece, and no check sees a cell that is not a disc unless
-// the triangulation shows a defect. A per-cell Euler characteristic would find them.
+// The cells around the hole are annuli in one piece, and the triangulation closes the hole
+// without a defect to show where (a manifold sphere, χ 2 against 0): the per-piece Euler
+// characteristic finds them (PieceEulerCollector).
 TEST(HardCases, ATorusWhoseHoleIsSmallerThanTheEdgeLength) {
   // Major radius 1, tube radius 0.95: the hole is 0.1 across, the edge length about 0.25.
   expect_valid_remesh(torus(1.0, 0.95, 96, 48), 600);
@@ -593,6 +594,39 @@ TEST(HardCases, ANeedle) {
   TriangleMesh needle = cylinder(40, 12);
   for (Vec3& v : needle.vertices) v.x *= 0.01, v.y *= 0.01;
   expect_valid_remesh(needle, 200);
+}
+
+// A flat strip 3 long and 0.3 wide whose top side is a saw of `teeth` teeth, each one triangle
+// as deep as it is wide: one boundary loop whose every vertex on the saw turns sharply.
+TriangleMesh toothed_strip(int teeth) {
+  TriangleMesh m;
+  const double pitch = 3.0 / teeth;
+  for (int i = 0; i <= teeth; ++i) {
+    m.vertices.push_back({i * pitch, 0, 0});              // 3i: the saw's base
+    m.vertices.push_back({i * pitch, -0.3, 0});           // 3i + 1: the strip's bottom side
+    m.vertices.push_back({(i + 0.5) * pitch, pitch, 0});  // 3i + 2: a tip (the last unused)
+  }
+  for (Index i = 0; i < static_cast<Index>(teeth); ++i) {
+    add_quad(m, 3 * i + 1, 3 * i + 4, 3 * i + 3, 3 * i);
+    m.triangles.push_back({3 * i, 3 * i + 3, 3 * i + 2});
+  }
+  m.vertices.pop_back();
+  return m;
+}
+
+TEST(HardCases, AStripWithHundredsOfBoundaryTeeth) {
+  const TriangleMesh strip = toothed_strip(300);
+  ASSERT_EQ(analyze_topology(strip).boundary_loops, 1u);
+  // Teeth a fifth of the edge length wide: the saw's 599 sharp turns are no corners at that
+  // scale (with them, 500 vertices were too few for the corners alone).
+  expect_valid_remesh(strip, 500);
+  // 0.7 of it: every turn is a corner, kept.
+  RemeshSettings s;
+  s.vertices = 5000;
+  const RemeshResult r = remesh(strip, s);
+  expect_topology_kept(r, strip);
+  EXPECT_EQ(r.features.corners.size(), 601u);  // the saw's, and the strip's bottom two
+  EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 20.0);
 }
 
 TEST(HardCases, FewAndManyVertices) {
