@@ -491,6 +491,13 @@ TEST(HardCases, TwoParallelSheetsCloserThanTheEdgeLength) {
                       1000);
 }
 
+TEST(HardCases, APlateThinnerThanATenthOfTheEdgeLength) {
+  // The box [-1,1]² × [-0.005,0.005]: 0.01 thick, the edge length about 0.18.
+  TriangleMesh plate = cube(8);
+  for (Vec3& v : plate.vertices) v.z *= 0.005;
+  expect_valid_remesh(plate, 300);
+}
+
 TEST(HardCases, TwoSpheresNearlyTouching) {
   expect_valid_remesh(concatenate(icosphere(3), transformed(icosphere(3), 1.0, {2.01, 0, 0})), 600);
 }
