@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <set>
 #include <vector>
 
 #include "features/edge_uses.hpp"
@@ -33,6 +32,7 @@ struct Loop {
   std::vector<Index> opposite;  // per edge (vertices[i], vertices[i + 1]): its triangle's third
 };
 std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
+                                              const std::vector<EdgeUse>& uses,
                                               std::span<const Triangle> removed) {
   std::vector<Edge> opened;
   for (const Triangle& t : removed)
@@ -40,7 +40,6 @@ std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
   std::sort(opened.begin(), opened.end());
 
   std::vector<std::optional<BoundaryStep>> from(mesh.vertices.size());
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i;
     while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
@@ -95,12 +94,17 @@ std::optional<std::vector<Triangle>> triangulated(const TriangleMesh& mesh, cons
 ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> removed,
                                const TopologyReport& input, bool oriented,
                                const std::function<Vec3(const Vec3&)>& onto_surface) {
-  const std::optional<std::vector<Loop>> loops = opened_loops(mesh, removed);
+  const std::vector<EdgeUse> uses = edge_uses(mesh);  // sorted by edge
+  const std::optional<std::vector<Loop>> loops = opened_loops(mesh, uses, removed);
   if (!loops || loops->empty()) return {};
   const std::size_t before = mesh.triangles.size(), vertices_before = mesh.vertices.size();
-  std::set<Edge> edges;  // of the mesh and the patches so far
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) edges.insert(edge_of(t[k], t[(k + 1) % 3]));
+  // Whether the mesh as it came has the edge. The patches add none that another patch could
+  // reuse: a chord joins two vertices of one loop, and no vertex is on two loops.
+  const auto in_mesh = [&](const Edge& e) {
+    const auto at = std::lower_bound(uses.begin(), uses.end(), e,
+                                     [](const EdgeUse& u, const Edge& x) { return u.edge < x; });
+    return at != uses.end() && at->edge == e;
+  };
   auto restore = [&] {
     mesh.triangles.resize(before);
     mesh.vertices.resize(vertices_before);
@@ -122,7 +126,7 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
         const bool loop_edge =
             loop.vertices[(i + 1) % loop.vertices.size()] == b ||
             loop.vertices[(i + loop.vertices.size() - 1) % loop.vertices.size()] == b;
-        if (!loop_edge && edges.contains(edge_of(a, b))) return true;
+        if (!loop_edge && in_mesh(edge_of(a, b))) return true;
       }
       return false;
     };
@@ -136,8 +140,6 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
       for (std::size_t i = 0; i < loop.vertices.size(); ++i)
         patch->push_back({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()], centre});
     }
-    for (const Triangle& t : *patch)
-      for (int k = 0; k < 3; ++k) edges.insert(edge_of(t[k], t[(k + 1) % 3]));
     mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
   }
   // Whatever the patches made (a fold against a kept triangle, patches meeting at a vertex of
