@@ -13,6 +13,7 @@
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
 #include "remesh/mend_topology.hpp"
+#include "sizing/size_field.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
@@ -160,26 +161,28 @@ TEST(Adaptive, ThinWaistKeepsTopologyWhereUniformDoesNot) {
   EXPECT_EQ(adaptive.triangles_removed, 0u);
 }
 
-TEST(Adaptive, HigherGradationSmoothsNeighbouringLengths) {
-  // The ratio of neighbouring edges' lengths, at the 95th percentile: near 1 for uniform
-  // sizes, larger where the sizes change fast; a higher gradation spreads the change.
+TEST(Adaptive, GradationBoundsNeighbouringTargetLengths) {
+  // The target lengths, once scaled to the count, change by at most 1/G per unit length along
+  // every edge; the raw lengths change faster at the waist (G = 0.01 leaves them as they are).
   const TriangleMesh shape = dumbbell(0.06, 160, 96);
-  auto spread = [&](double gradation) {
+  std::vector<Index> same(shape.vertices.size());
+  for (Index v = 0; v < same.size(); ++v) same[v] = v;
+  auto steepest = [&](double gradation) {
     RemeshSettings s;
-    s.vertices = 1500;
+    s.vertices = 300;
     s.sizing.adaptive = gradation;
-    const TriangleMesh out = remesh(shape, s).mesh;
-    std::vector<double> ratio;
-    for (const Triangle& t : out.triangles)
-      for (int k = 0; k < 3; ++k) {
-        const double a = distance(out.vertices[t[k]], out.vertices[t[(k + 1) % 3]]);
-        const double b = distance(out.vertices[t[(k + 1) % 3]], out.vertices[t[(k + 2) % 3]]);
-        ratio.push_back(std::max(a, b) / std::min(a, b));
-      }
-    std::sort(ratio.begin(), ratio.end());
-    return ratio[ratio.size() * 95 / 100];
+    const std::optional<SizeField> field = make_size_field(shape, same, s);
+    double slope = 0;
+    for (const Edge& e : sorted_edges(shape)) {
+      const double change = std::abs(field->at_vertex(e[0]) - field->at_vertex(e[1]));
+      slope = std::max(slope, change / distance(shape.vertices[e[0]], shape.vertices[e[1]]));
+    }
+    EXPECT_NEAR(field->vertex_count(), 300, 1);
+    return slope;
   };
-  EXPECT_LT(spread(6), spread(0.5));
+  EXPECT_LE(steepest(6), 1 / 6.0 + 1e-9);
+  EXPECT_LE(steepest(1.5), 1 / 1.5 + 1e-9);
+  EXPECT_GT(steepest(0.01), 1 / 6.0);
 }
 
 TEST(Adaptive, SizesFromAFile) {

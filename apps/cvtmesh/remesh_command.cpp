@@ -142,8 +142,9 @@ void add_remesh_command(CLI::App& app, Action& run) {
   relative->excludes(seeds);
   auto* adaptive =
       cmd->add_option("--adaptive", o->settings.sizing.adaptive,
-                      "Edge lengths that follow the local feature size (short on thin parts and "
-                      "tight curves), graded: G or more edge lengths to double in size")
+                      "Edge lengths ∝ √(local feature size), the paper's density 1/lfs² (short on "
+                      "thin parts and tight curves), graded: G or more edge lengths to double in "
+                      "size")
           ->expected(0, 1)
           ->default_str("1.5")
           ->check(CLI::PositiveNumber);

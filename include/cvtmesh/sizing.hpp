@@ -32,17 +32,21 @@ struct LfsSettings {
 std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettings& settings = {});
 
 // Target edge lengths for remeshing (RemeshSettings::sizing): one of three sources, then one
-// scale factor for the output size, then the clamps. The lengths are linear over each input
-// triangle. CVT gives cells of about equal energy, so a density ρ spreads seeds ∝ √ρ by area
-// (paper §4.1, [DFG99]): the remesher uses ρ = h⁻⁴ for edges about h long. (The paper's
-// ρ = 1/lfs² makes edges ∝ √lfs, coarser than Theorem 2's ε·lfs on thin parts; h ∝ lfs is what
-// geogram's gradation 1 does too.)
+// scale factor for the output size, then the grading (adaptive only), then the clamps. The
+// lengths are linear over each input triangle. CVT gives cells of about equal energy, so a
+// density ρ spreads seeds ∝ √ρ by area (paper §4.1, [DFG99]): the remesher uses ρ = h⁻⁴ for
+// edges about h long.
 struct SizingSettings {
-  // > 0: h ∝ the local feature size, graded with this gradation (see LfsSettings; 1.5 is a good
-  // default): thin parts and tight curvature get short edges.
+  // > 0: the paper's density ρ = 1/lfs² (§4.1), edges h ∝ √lfs: thin parts and tight curvature
+  // get short edges, and the chord error h²/(8 lfs) is about even where lfs is the radius of
+  // curvature. The lengths, once scaled to the output size, are graded to change by at most
+  // 1/adaptive per unit length (1.5 is a good default; higher: smoother). h ∝ lfs, Theorem 2's
+  // ε-sampling, was tried: it took more seeds from topology control on the corpus at 2k (3,853
+  // against 1,084), with a worse Hausdorff max and θmin.
   double adaptive = 0;
   std::size_t lfs_samples = 0;  // LfsSettings::samples, for adaptive
-  // Adaptive only: the lengths stay within this factor of their median (by area) either way.
+  // Adaptive only: the local feature sizes are kept within this factor of their median (by
+  // area) either way, the lengths within its square root.
   // The raw estimate falls towards 0 where parts touch, at creases and on noise: unclamped,
   // a few such spots would take a large share of the vertices and cells far smaller than
   // their neighbours (diplodocus at 2k: θmin 2.9°, topology lost; clamped at 10: see README).

@@ -81,7 +81,7 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
   PolygonSink* sinks[] = {&integrator, &stop};
   rvd.traverse(sinks);
   const CellIntegrals& integrals = integrator.result();
-  Evaluation e{integrals.total_energy, integrals.gradient(seeds), {}};
+  Evaluation e{integrals.total_energy, integrals.gradient(seeds), {}, integrals.mass};
   e.centroids.resize(seeds.size());
   for (std::size_t s = 0; s < seeds.size(); ++s)
     e.centroids[s] = integrals.mass[s] > 0 ? integrals.centroid(static_cast<Index>(s)) : seeds[s];

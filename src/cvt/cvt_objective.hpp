@@ -33,6 +33,7 @@ class CvtObjective {
     double energy;
     std::vector<Vec3> gradient;
     std::vector<Vec3> centroids;  // restricted centroids (the seed itself where its cell is empty)
+    std::vector<double> masses;   // ∫ρ over each cell (0 where it is empty)
   };
   // `seeds` are replaced by the points actually evaluated (projected, when constrained).
   Evaluation operator()(std::vector<Vec3>& seeds);

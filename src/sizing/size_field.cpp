@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cvtmesh/errors.hpp"
+#include "sizing/gradation.hpp"
 
 namespace cvtmesh {
 
@@ -45,10 +46,14 @@ std::vector<double> raw_sizes(const TriangleMesh& mesh, const std::vector<Index>
   if (s.adaptive > 0) {
     if (!std::isfinite(s.adaptive)) throw InvalidArgument("the gradation must be finite");
     if (!(s.adaptive_range >= 1)) throw InvalidArgument("the adaptive range must be at least 1");
-    std::vector<double> lfs = local_feature_size(mesh, {s.lfs_samples, settings.seed, s.adaptive});
+    // Raw: the grading is applied to the lengths once scaled (make_size_field).
+    std::vector<double> lfs = local_feature_size(mesh, {s.lfs_samples, settings.seed, 0});
     const double median = area_median(mesh, lfs);
+    // ρ = 1/lfs² (§4.1): seeds ∝ √ρ = 1/lfs per area, edges ∝ √lfs. Where lfs is the radius of
+    // curvature, that spreads the chord error h²/(8 lfs) evenly over the surface.
     for (double& x : lfs)
-      if (x > 0) x = std::clamp(x, median / s.adaptive_range, median * s.adaptive_range);
+      if (x > 0)
+        x = std::sqrt(std::clamp(x, median / s.adaptive_range, median * s.adaptive_range) * median);
     return lfs;
   }
   std::vector<double> h(mesh.vertices.size(), 0);
@@ -70,16 +75,19 @@ std::vector<double> raw_sizes(const TriangleMesh& mesh, const std::vector<Index>
   return h;
 }
 
-// The lengths h·k, clamped; vertices in no triangle get 1 (they carry no area).
-std::vector<double> scaled_sizes(const std::vector<double>& h, const std::vector<bool>& used,
-                                 double k, double min, double max) {
+// The lengths h·k, graded (for an adaptive sizing), then clamped; vertices in no triangle get 1
+// (they carry no area). Graded after the scaling, so that neighbouring output edges differ by
+// the gradation's bound whatever the count; the clamps keep that bound.
+std::vector<double> scaled_sizes(const TriangleMesh& mesh, const std::vector<double>& h,
+                                 const std::vector<bool>& used, double k, const SizingSettings& s) {
   std::vector<double> out(h.size(), 1.0);
+  for (std::size_t v = 0; v < h.size(); ++v)
+    if (used[v]) out[v] = h[v] * k;
+  if (s.adaptive > 0) out = graded(mesh, std::move(out), s.adaptive);
   for (std::size_t v = 0; v < h.size(); ++v) {
     if (!used[v]) continue;
-    double x = h[v] * k;
-    if (min > 0) x = std::max(x, min);
-    if (max > 0) x = std::min(x, max);
-    out[v] = x;
+    if (s.min_edge_length > 0) out[v] = std::max(out[v], s.min_edge_length);
+    if (s.max_edge_length > 0) out[v] = std::min(out[v], s.max_edge_length);
   }
   return out;
 }
@@ -150,22 +158,31 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
   const std::size_t vertices =
       settings.vertices > 0 ? settings.vertices : settings.initial_seeds.size();
   if (vertices > 0) {
-    // One factor k for the count: without clamps the count goes as k⁻², with them it is
-    // monotone in k; bisected on log k (a count the clamps cannot reach gets the nearest).
+    // One factor k for the count. Without clamps or grading the count goes as k⁻²; they only
+    // flatten that (grading shortens the long lengths more, clamps hold lengths still), so
+    // log count falls with log k at a slope between -2 and 0, and this step, exact for k⁻²,
+    // never overshoots. Where the clamps flatten it so much that the steps crawl, bisection on
+    // log k finishes (a count the clamps cannot reach gets the nearest).
     const auto count = [&](double k) {
-      return SizeField(mesh, scaled_sizes(h, used, k, min, max)).vertex_count();
+      return SizeField(mesh, scaled_sizes(mesh, h, used, k, s)).vertex_count();
     };
     const auto n = static_cast<double>(vertices);
     double k = std::sqrt(count(1.0) / n);
-    if (min > 0 || max > 0) {
+    bool reached = false;
+    for (int step = 0; step < 12 && !reached; ++step) {
+      const double c = count(k);
+      reached = std::abs(c / n - 1) < 1e-3;
+      if (!reached) k *= std::sqrt(c / n);
+    }
+    if (!reached) {
       double lo = std::log(k) - 20, hi = std::log(k) + 20;
-      for (int step = 0; step < 80; ++step) {
+      for (int step = 0; step < 60; ++step) {
         const double mid = (lo + hi) / 2;
         (count(std::exp(mid)) > n ? lo : hi) = mid;
       }
       k = std::exp((lo + hi) / 2);
     }
-    return SizeField(mesh, scaled_sizes(h, used, k, min, max));
+    return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
   }
   const double length = settings.edge_length != 0 ? settings.edge_length
                         : settings.edge_length_rel != 0
@@ -176,7 +193,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
   if (length != 0 && !(length > 0 && std::isfinite(length)))
     throw InvalidArgument("the edge length must be positive");
   const double k = length > 0 ? length / area_median(mesh, h) : 1.0;
-  return SizeField(mesh, scaled_sizes(h, used, k, min, max));
+  return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
 }
 
 }  // namespace cvtmesh
