@@ -116,11 +116,11 @@ def run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff):
         return row
 
 
-def run_vorpalite(exe, vorpalite, mesh, n, timeout):
+def run_vorpalite(exe, vorpalite, mesh, n, timeout, extra=()):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "out.obj")
         rc, _, stderr, wall, mem = run_measured(
-            [vorpalite, str(mesh), out, str(n), "sys:max_threads=1"], timeout)
+            [vorpalite, str(mesh), out, str(n), "sys:max_threads=1"] + list(extra), timeout)
         if rc != 0 or not os.path.exists(out):
             return {"tool": "vorpalite", "error": f"exit {rc}", "time": wall, "mem": mem}
         q = subprocess.run([exe, "quality", out, "--ref", str(mesh), "--json"],

@@ -1,0 +1,146 @@
+#!/usr/bin/env python3
+"""Adaptive benchmark (issue 20): every mesh of ../shared/data and ../shared/data/corpus at one
+vertex count (default 2k), remeshed three ways in the same run: cvtmesh uniform (the defaults),
+cvtmesh --adaptive, and, with ../shared/tools/vorpalite-iso present, geogram's vorpalite with
+remesh:gradation=1 (its adaptive mode). One row per mesh and tool: manifold, same topology,
+seeds added by topology control, θmin, Qmin, Hausdorff mean and max (% of the bbox diagonal,
+measured afterwards by `cvtmesh quality --ref` for every tool alike), wall time.
+
+    bench/adaptive.py [--count 2000] [--jobs J] [--seed S] [--no-vorpalite] [--only NAME,...]
+                      [--build build] [--data DIR] [--timeout S] [--markdown]
+
+It ends with the issue's totals: on how many meshes adaptive keeps the topology; the seeds it
+adds against uniform's; on how many its Hausdorff max is below uniform's; on how many its θmin
+is at least 26° and its Qmin at least 0.53 (away from narrow input angles); the median of its
+time over uniform's; and against vorpalite's gradation, how often it is at least as good in
+θmin and in Hausdorff max, and the median time ratio. Runs are single-threaded, J at a time.
+"""
+
+import argparse
+import concurrent.futures
+import os
+import statistics
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from corpus import MESH_EXTS, ROOT, fmt, run_cvtmesh, run_vorpalite  # noqa: E402
+
+TOOLS = ("uniform", "adaptive", "vorpalite-g1")
+
+
+def job(args):
+    tool, exe, vorpalite, mesh, n, timeout, seed = args
+    if tool == "vorpalite-g1":
+        r = run_vorpalite(exe, vorpalite, mesh, n, timeout, ["remesh:gradation=1"])
+    else:
+        extra = ["--seed", str(seed)] + (["--adaptive"] if tool == "adaptive" else [])
+        r = run_cvtmesh(exe, mesh, n, timeout, extra, True)
+    r["tool"] = tool
+    return r
+
+
+HEADER = ["mesh", "tool", "manifold", "same topo", "seeds added", "θmin", "θmin away", "Qmin",
+          "Hd mean %", "Hd max %", "time s"]
+
+
+def cells(name, r):
+    if "error" in r:
+        return [name, r["tool"], "ERROR: " + r["error"]] + [""] * 8
+    m = r["manifold"]
+    return [name, r["tool"], m if m == "kept" else "yes" if m else "NO",
+            "yes" if r["same_topology"] else "NO", fmt(r.get("seeds_added"), "d"),
+            fmt(r["theta_min"], ".1f"), fmt(r.get("theta_min_away"), ".1f"), fmt(r["q_min"], ".3f"),
+            fmt(r["hd_mean"], ".3f"), fmt(r["hd_max"], ".2f"), f'{r["time"]:.2f}']
+
+
+def totals(results, names):
+    def ok(r):
+        return r is not None and "error" not in r
+    kept, hd_lower, bar, ratios, n = 0, 0, 0, [], 0
+    added = {"uniform": 0, "adaptive": 0}
+    vs_v = {"theta": 0, "hd": 0, "both": 0, "ratios": []}
+    for name in names:
+        u, a, v = (results.get((name, t)) for t in TOOLS)
+        if not ok(u) or not ok(a):
+            continue
+        n += 1
+        kept += bool(a["manifold"]) and a["same_topology"]
+        hd_lower += a["hd_max"] < u["hd_max"]
+        away = a.get("theta_min_away")
+        bar += (away if away is not None else a["theta_min"]) >= 26 and a["q_min"] >= 0.53
+        ratios.append(a["time"] / max(u["time"], 1e-9))
+        added["uniform"] += u.get("seeds_added") or 0
+        added["adaptive"] += a.get("seeds_added") or 0
+        if ok(v):
+            vs_v["both"] += 1
+            vs_v["theta"] += a["theta_min"] >= v["theta_min"]
+            vs_v["hd"] += a["hd_max"] <= v["hd_max"]
+            vs_v["ratios"].append(a["time"] / max(v["time"], 1e-9))
+    print()
+    if n == 0:
+        print("no mesh measured")
+        return
+    print(f"adaptive against uniform, {n} meshes: topology kept {kept}/{n}; seeds added "
+          f"{added['adaptive']} against {added['uniform']}; Hausdorff max lower {hd_lower}/{n}; "
+          f"θmin ≥ 26° and Qmin ≥ 0.53 {bar}/{n}; time ratio median "
+          f"{statistics.median(ratios):.2f}")
+    if vs_v["both"]:
+        print(f"adaptive against vorpalite remesh:gradation=1, {vs_v['both']} meshes: θmin at "
+              f"least its {vs_v['theta']}, Hausdorff max at most its {vs_v['hd']}, time ratio "
+              f"median {statistics.median(vs_v['ratios']):.2f}")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--count", type=int, default=2000)
+    p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--build", default=str(ROOT / "build"))
+    p.add_argument("--data", default=os.environ.get("CVTMESH_SHARED_DATA",
+                                                    str(ROOT.parent / "shared" / "data")))
+    p.add_argument("--no-vorpalite", action="store_true")
+    p.add_argument("--only", default="", help="comma-separated file names to run")
+    p.add_argument("--timeout", type=float, default=600)
+    p.add_argument("--markdown", action="store_true")
+    a = p.parse_args()
+
+    exe = str(Path(a.build) / "apps" / "cvtmesh" / "cvtmesh")
+    if not os.access(exe, os.X_OK):
+        sys.exit(f"adaptive.py: {exe}: not built (run ./scripts/build)")
+    data = Path(a.data)
+    if not data.is_dir():
+        sys.exit(f"adaptive.py: {data}: no shared data; nothing to measure")
+    meshes = sorted(f for d in (data, data / "corpus") if d.is_dir() for f in d.iterdir()
+                    if f.suffix.lower() in MESH_EXTS)
+    if a.only:
+        meshes = [m for m in meshes if m.name in set(a.only.split(","))]
+    vorpalite = data.parent / "tools" / "vorpalite-iso"
+    tools = TOOLS if not a.no_vorpalite and os.access(vorpalite, os.X_OK) else TOOLS[:2]
+    tasks = [(t, exe, str(vorpalite), m, a.count, a.timeout, a.seed) for m in meshes for t in tools]
+
+    if a.markdown:
+        print("| " + " | ".join(HEADER) + " |")
+        print("|" + "---|" * len(HEADER))
+    else:
+        print("  ".join(HEADER))
+    results = {}
+    # One worker process per run, as corpus.py does, so that each run's peak memory is its own.
+    with concurrent.futures.ProcessPoolExecutor(max_workers=a.jobs,
+                                                max_tasks_per_child=1) as pool:
+        futures = {pool.submit(job, t): t for t in tasks}
+        order = [(t[3].name, t[0]) for t in tasks]
+        printed = 0
+        for f in concurrent.futures.as_completed(futures):
+            t = futures[f]
+            results[(t[3].name, t[0])] = f.result()
+            while printed < len(order) and order[printed] in results:
+                row = cells(order[printed][0], results[order[printed]])
+                print("| " + " | ".join(row) + " |" if a.markdown else "  ".join(row))
+                sys.stdout.flush()
+                printed += 1
+    totals(results, [m.name for m in meshes])
+
+
+if __name__ == "__main__":
+    main()
