@@ -17,14 +17,14 @@ time over uniform's; and against vorpalite's gradation, how often it is at least
 """
 
 import argparse
-import concurrent.futures
 import os
 import statistics
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from corpus import MESH_EXTS, ROOT, fmt, run_cvtmesh, run_vorpalite  # noqa: E402
+from corpus import (  # noqa: E402
+    MESH_EXTS, add_common_arguments, fmt, print_header, run_cvtmesh, run_in_order, run_vorpalite)
 
 TOOLS = ("uniform", "adaptive", "vorpalite-g1")
 
@@ -94,15 +94,8 @@ def totals(results, names):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--count", type=int, default=2000)
-    p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--seed", type=int, default=1)
-    p.add_argument("--build", default=str(ROOT / "build"))
-    p.add_argument("--data", default=os.environ.get("CVTMESH_SHARED_DATA",
-                                                    str(ROOT.parent / "shared" / "data")))
-    p.add_argument("--no-vorpalite", action="store_true")
-    p.add_argument("--only", default="", help="comma-separated file names to run")
-    p.add_argument("--timeout", type=float, default=600)
-    p.add_argument("--markdown", action="store_true")
+    add_common_arguments(p)
     a = p.parse_args()
 
     exe = str(Path(a.build) / "apps" / "cvtmesh" / "cvtmesh")
@@ -119,26 +112,13 @@ def main():
     tools = TOOLS if not a.no_vorpalite and os.access(vorpalite, os.X_OK) else TOOLS[:2]
     tasks = [(t, exe, str(vorpalite), m, a.count, a.timeout, a.seed) for m in meshes for t in tools]
 
-    if a.markdown:
-        print("| " + " | ".join(HEADER) + " |")
-        print("|" + "---|" * len(HEADER))
-    else:
-        print("  ".join(HEADER))
-    results = {}
-    # One worker process per run, as corpus.py does, so that each run's peak memory is its own.
-    with concurrent.futures.ProcessPoolExecutor(max_workers=a.jobs,
-                                                max_tasks_per_child=1) as pool:
-        futures = {pool.submit(job, t): t for t in tasks}
-        order = [(t[3].name, t[0]) for t in tasks]
-        printed = 0
-        for f in concurrent.futures.as_completed(futures):
-            t = futures[f]
-            results[(t[3].name, t[0])] = f.result()
-            while printed < len(order) and order[printed] in results:
-                row = cells(order[printed][0], results[order[printed]])
-                print("| " + " | ".join(row) + " |" if a.markdown else "  ".join(row))
-                sys.stdout.flush()
-                printed += 1
+    print_header(HEADER, a.markdown)
+
+    def show(key, r):
+        row = cells(key[0], r)
+        print("| " + " | ".join(row) + " |" if a.markdown else "  ".join(row))
+
+    results = run_in_order(job, tasks, lambda t: (t[3].name, t[0]), a.jobs, show)
     totals(results, [m.name for m in meshes])
 
 

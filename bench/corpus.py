@@ -163,13 +163,8 @@ def print_row(name, n, r, markdown):
     sys.stdout.flush()
 
 
-HEADER = ["mesh", "N", "tool", "manifold", "same topo", "seeds added", "θmin", "θmin away",
-          "Qmin", "% <30°", "Hd mean %", "Hd max %", "feature Hd %", "corners", "time s", "MB"]
-
-
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("--counts", default="1000,5000,10000")
+def add_common_arguments(p):
+    """The options that this benchmark and adaptive.py share."""
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--build", default=str(ROOT / "build"))
     p.add_argument("--data", default=os.environ.get("CVTMESH_SHARED_DATA",
@@ -178,6 +173,42 @@ def main():
     p.add_argument("--only", default="", help="comma-separated file names to run")
     p.add_argument("--timeout", type=float, default=600)
     p.add_argument("--markdown", action="store_true")
+
+
+def print_header(header, markdown):
+    if markdown:
+        print("| " + " | ".join(header) + " |")
+        print("|" + "---|" * len(header))
+    else:
+        print("  ".join(header))
+
+
+def run_in_order(job, tasks, key, jobs, show):
+    """Runs job(task) for every task, `jobs` at a time, one worker process per run
+    (max_tasks_per_child=1) so that RUSAGE_CHILDREN's peak is that run's alone. Calls
+    show(key(task), result) in the tasks' order as the results come in; returns them by key."""
+    results = {}
+    with concurrent.futures.ProcessPoolExecutor(max_workers=jobs, max_tasks_per_child=1) as pool:
+        futures = {pool.submit(job, t): t for t in tasks}
+        order = [key(t) for t in tasks]
+        shown = 0
+        for f in concurrent.futures.as_completed(futures):
+            results[key(futures[f])] = f.result()
+            while shown < len(order) and order[shown] in results:
+                show(order[shown], results[order[shown]])
+                sys.stdout.flush()
+                shown += 1
+    return results
+
+
+HEADER = ["mesh", "N", "tool", "manifold", "same topo", "seeds added", "θmin", "θmin away",
+          "Qmin", "% <30°", "Hd mean %", "Hd max %", "feature Hd %", "corners", "time s", "MB"]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("--counts", default="1000,5000,10000")
+    add_common_arguments(p)
     p.add_argument("--require-valid", action="store_true",
                    help="exit 1 unless every cvtmesh run succeeds with a manifold output (or the "
                         "non-manifold input's own edges kept), the input's topology and no "
@@ -209,26 +240,9 @@ def main():
             tasks.append(("cvtmesh",) + task)
             if use_vorpalite:
                 tasks.append(("vorpalite",) + task)
-    if a.markdown:
-        print("| " + " | ".join(HEADER) + " |")
-        print("|" + "---|" * len(HEADER))
-    else:
-        print("  ".join(HEADER))
-    # One worker process per run (max_tasks_per_child=1) so that RUSAGE_CHILDREN's peak is
-    # that run's alone.
-    results = {}
-    with concurrent.futures.ProcessPoolExecutor(max_workers=a.jobs,
-                                                max_tasks_per_child=1) as pool:
-        futures = {pool.submit(job, t): t for t in tasks}
-        pending_order = [(t[3].name, t[4], t[0]) for t in tasks]
-        next_to_print = 0
-        for f in concurrent.futures.as_completed(futures):
-            t = futures[f]
-            results[(t[3].name, t[4], t[0])] = f.result()
-            while next_to_print < len(pending_order) and pending_order[next_to_print] in results:
-                key = pending_order[next_to_print]
-                print_row(key[0], key[1], results[key], a.markdown)
-                next_to_print += 1
+    print_header(HEADER, a.markdown)
+    results = run_in_order(job, tasks, lambda t: (t[3].name, t[4], t[0]), a.jobs,
+                           lambda key, r: print_row(key[0], key[1], r, a.markdown))
 
     ours = [r for (_, _, tool), r in results.items() if tool == "cvtmesh"]
     ok = [r for r in ours if "error" not in r]
