@@ -1,6 +1,7 @@
 // The local feature size from the poles of a dense sample (paper §4.1), on shapes whose medial
 // axis is known, and its grading.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -99,6 +100,17 @@ TEST(LocalFeatureSize, SameSettingsSameSizesAndBadSettingsAreRefused) {
   flat.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
   flat.triangles = {{0, 1, 2}};
   EXPECT_THROW(local_feature_size(flat), InvalidArgument);
+}
+
+TEST(LocalFeatureSize, SameSizesOnAnyThreadCount) {
+  // The poles are found in parallel and gathered in the triangulation's order.
+  const TriangleMesh shape = torus(1.0, 0.3, 48, 24);
+  std::vector<double> one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = local_feature_size(shape, raw());
+  }
+  EXPECT_EQ(local_feature_size(shape, raw()), one);
 }
 
 }  // namespace

@@ -6,6 +6,9 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <tbb/parallel_for.h>
+
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -59,41 +62,65 @@ std::vector<Vec3> sample_poles(const std::vector<SurfaceSample>& samples) {
   }
   Delaunay delaunay(points.begin(), points.end());  // spatially sorted inside
   if (delaunay.dimension() < 3) return {};          // coplanar samples: no Voronoi vertex at all
-  std::vector<Vec3> centres;
+  // The cells' circumcentres and the samples' poles are computed in parallel, each into its own
+  // slot, and gathered in the triangulation's order: the same poles on any thread count.
+  std::vector<Delaunay::Cell_handle> finite_cells;
   for (auto c = delaunay.finite_cells_begin(); c != delaunay.finite_cells_end(); ++c) {
-    c->info() = centres.size();
-    centres.push_back(circumcentre(c));
+    c->info() = finite_cells.size();
+    finite_cells.push_back(c);
   }
+  std::vector<Vec3> centres(finite_cells.size());
+  tbb::parallel_for(std::size_t{0}, finite_cells.size(),
+                    [&](std::size_t k) { centres[k] = circumcentre(finite_cells[k]); });
   Vec3 centroid;
   for (const SurfaceSample& s : samples) centroid += s.point;
   centroid = (1.0 / static_cast<double>(samples.size())) * centroid;
 
   // Per sample, the farthest Voronoi vertex (circumcentre of an incident cell) on each side.
-  std::vector<Vec3> pole;
-  std::vector<Delaunay::Cell_handle> cells;
+  // The cells around each vertex are listed first, serially: CGAL's incident_cells marks the
+  // cells it visits, so concurrent calls would see each other's marks.
+  std::vector<Delaunay::Vertex_handle> vertices;
+  std::vector<std::size_t> slot(samples.size());
   for (auto v = delaunay.finite_vertices_begin(); v != delaunay.finite_vertices_end(); ++v) {
-    const SurfaceSample& s = samples[v->info()];
-    cells.clear();
-    delaunay.incident_cells(v, std::back_inserter(cells));
+    slot[v->info()] = vertices.size();
+    vertices.push_back(v);
+  }
+  std::vector<std::size_t> first(vertices.size() + 1, 0);
+  std::vector<char> on_hull(vertices.size(), 0);
+  for (auto c = delaunay.all_cells_begin(); c != delaunay.all_cells_end(); ++c)
+    for (int i = 0; i < 4; ++i) {
+      if (delaunay.is_infinite(c->vertex(i))) continue;
+      const std::size_t k = slot[c->vertex(i)->info()];
+      if (delaunay.is_infinite(c))
+        on_hull[k] = 1;
+      else
+        ++first[k + 1];
+    }
+  for (std::size_t k = 0; k < vertices.size(); ++k) first[k + 1] += first[k];
+  std::vector<std::size_t> around(first.back()), next(first.begin(), first.end() - 1);
+  for (const Delaunay::Cell_handle& c : finite_cells)
+    for (int i = 0; i < 4; ++i) around[next[slot[c->vertex(i)->info()]]++] = c->info();
+
+  std::vector<std::array<Vec3, 2>> at(vertices.size());
+  std::vector<std::array<bool, 2>> found(vertices.size(), {false, false});
+  tbb::parallel_for(std::size_t{0}, vertices.size(), [&](std::size_t k) {
+    const SurfaceSample& s = samples[vertices[k]->info()];
     double far[2] = {0, 0};  // squared distances, along +normal and -normal
-    Vec3 at[2];
-    bool on_hull = false;
-    for (const Delaunay::Cell_handle& c : cells) {
-      if (delaunay.is_infinite(c)) {
-        on_hull = true;
-        continue;
-      }
-      const Vec3 d = centres[c->info()] - s.point;
+    for (std::size_t i = first[k]; i < first[k + 1]; ++i) {
+      const Vec3 d = centres[around[i]] - s.point;
       const int side = dot(d, s.normal) < 0;
       const double d2 = dot(d, d);
-      if (d2 > far[side]) far[side] = d2, at[side] = centres[c->info()];
+      if (d2 > far[side]) far[side] = d2, at[k][side] = centres[around[i]];
     }
     // The hull is convex: from a point on it, its inside (the samples' centroid) lies opposite
     // the outer side, whose pole is at infinity.
-    const int outer = on_hull ? dot(s.point - centroid, s.normal) < 0 : -1;
+    const int outer = on_hull[k] ? dot(s.point - centroid, s.normal) < 0 : -1;
+    for (int side = 0; side < 2; ++side) found[k][side] = far[side] > 0 && side != outer;
+  });
+  std::vector<Vec3> pole;
+  for (std::size_t k = 0; k < vertices.size(); ++k)
     for (int side = 0; side < 2; ++side)
-      if (far[side] > 0 && side != outer) pole.push_back(at[side]);
-  }
+      if (found[k][side]) pole.push_back(at[k][side]);
   return pole;
 }
 
