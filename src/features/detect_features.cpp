@@ -153,10 +153,16 @@ void chain(const TriangleMesh& mesh, double cos_threshold, double scale,
     chain_curves();
     if (scale == 0) return;
     bool changed = false;
-    for (const FeatureCurve& c : f.curves)
-      if (!c.closed && curve_length(mesh, c) < kShortestTurnCurve * scale)
-        for (const Index end : {c.vertices.front(), c.vertices.back()})
-          if (turn[end] && corner[end]) corner[end] = false, changed = true;
+    const auto turns = [&](Index v) { return turn[v] && corner[v]; };
+    for (const FeatureCurve& c : f.curves) {
+      // Measured only where an end may stop being a corner: most curves end elsewhere.
+      const Index a = c.vertices.front(), b = c.vertices.back();
+      if (c.closed || !(turns(a) || turns(b)) ||
+          curve_length(mesh, c) >= kShortestTurnCurve * scale)
+        continue;
+      for (const Index end : {a, b})
+        if (turns(end)) corner[end] = false, changed = true;
+    }
     if (!changed) return;
   }
 }

@@ -168,21 +168,19 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     };
     const auto n = static_cast<double>(vertices);
     double k = std::sqrt(count(1.0) / n);
-    bool reached = false;
-    for (int step = 0; step < 12 && !reached; ++step) {
-      const double c = count(k);
-      reached = std::abs(c / n - 1) < 1e-3;
-      if (!reached) k *= std::sqrt(c / n);
+    for (int step = 0; step < 12; ++step) {
+      // The sizes of the k that reaches the count are the field: not graded again.
+      std::vector<double> sizes = scaled_sizes(mesh, h, used, k, s);
+      const double c = SizeField(mesh, sizes).vertex_count();
+      if (std::abs(c / n - 1) < 1e-3) return SizeField(mesh, std::move(sizes));
+      k *= std::sqrt(c / n);
     }
-    if (!reached) {
-      double lo = std::log(k) - 20, hi = std::log(k) + 20;
-      for (int step = 0; step < 60; ++step) {
-        const double mid = (lo + hi) / 2;
-        (count(std::exp(mid)) > n ? lo : hi) = mid;
-      }
-      k = std::exp((lo + hi) / 2);
+    double lo = std::log(k) - 20, hi = std::log(k) + 20;
+    for (int step = 0; step < 60; ++step) {
+      const double mid = (lo + hi) / 2;
+      (count(std::exp(mid)) > n ? lo : hi) = mid;
     }
-    return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
+    return SizeField(mesh, scaled_sizes(mesh, h, used, std::exp((lo + hi) / 2), s));
   }
   const double length = settings.edge_length != 0 ? settings.edge_length
                         : settings.edge_length_rel != 0
