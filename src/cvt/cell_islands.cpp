@@ -17,7 +17,8 @@ std::vector<CellIsland> cell_islands(const CellPieceCollector& collector) {
   std::vector<CellIsland> islands;
   for (std::size_t i = 1; i < pieces.size(); ++i)
     if (pieces[i].seed == pieces[i - 1].seed && pieces[i].area > 0)
-      islands.push_back({pieces[i].seed, (1 / pieces[i].area) * pieces[i].moment, pieces[i].area});
+      islands.push_back(
+          {pieces[i].seed, (1 / pieces[i].area) * pieces[i].moment, pieces[i].area, i});
   return islands;
 }
 

@@ -16,6 +16,7 @@ struct CellIsland {
   Index seed;     // the cell it belongs to
   Vec3 centroid;  // its area centroid
   double area;
+  std::size_t piece;  // its index in the collector's pieces()
 };
 
 // The pieces of restricted Voronoi cells beyond each cell's largest, in seed order, then by

@@ -41,6 +41,13 @@ constexpr int kPinnedRoundsPerRound = 3;
 // where the defects' seeds make as many new defects, the count doubles each round (a fuzzed
 // 11-triangle soup went from 40 seeds to 1,057 in 5 rounds, none of them better than the first).
 constexpr std::size_t kGrowthWithoutProgress = 2;
+// Nor once the seeds each round adds have doubled this many rounds in a row without progress:
+// where no sampling resolves a spot (two sheets that touch at a point: the seed nearest to it
+// owns both sides, however dense the seeds), each new seed's cell is split again, and the rounds
+// add ever more seeds there (diplodocus.off at 10k, adaptive, pinned: 69, 152, 353, 704, 1,406,
+// 2,636, 4,724), while refinement that converges adds about as many seeds each round (femur.off
+// at 1k, pinned: at most 1.9 times the round before).
+constexpr int kDoublingsWithoutProgress = 2;
 
 // The links whose seeds are not joined by an edge of `rdt` (vertices: the seeds, by id).
 std::vector<FeatureLink> missing_links(const std::vector<FeatureLink>& links,
@@ -237,7 +244,9 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   };
   const SpecialEdges special = special_edges(m);
   std::optional<Round> best;
-  int since_best = 0;  // rounds since the best was found
+  int since_best = 0;          // rounds since the best was found
+  std::size_t last_added = 0;  // seeds the last round added
+  int doublings = 0;           // rounds in a row, without progress, that added twice the last's
   // Where the rounds end without the input's topology, they start again from the best round, for
   // three times as many rounds, with the seeds they add pinned (see kRoundsWithoutProgress).
   PolishSettings polish = m.polish;
@@ -262,11 +271,13 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // Out of time (issue 22), the rounds go on for the topology only: validity comes first.
     const bool out_of_time = m.placement.interrupt().out_of_time();
     const bool runaway =
-        since_best > 0 && seeds.size() >= kGrowthWithoutProgress * best->seeds.size();
+        since_best > 0 && (seeds.size() >= kGrowthWithoutProgress * best->seeds.size() ||
+                           doublings >= kDoublingsWithoutProgress);
     if (round < last_round && (pinned || since_best < kRoundsWithoutProgress) && !runaway) {
       // Where the output shows a defect, from the seeds as extracted (one RVD for both): a seed in
-      // each piece of a cell but its largest, and, for each triangle at a defect, seeds where
-      // its dual Voronoi edge crosses the surface (Delaunay refinement).
+      // each piece of a cell but its largest (near the defects, until the rounds are pinned), and,
+      // for each triangle at a defect, seeds where its dual Voronoi edge crosses the surface
+      // (Delaunay refinement).
       DefectSeeds found;
       if (!a.topology_kept) {
         const OutputDefects& defects = a.defects;
@@ -281,8 +292,9 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
         // thinner than the spacing is no disc either, yet the triangulation around it is often
         // right: seeds in every such band from the first round doubled the seeds added on
         // camel.off at 1k, and cost its θmin (23° to 0°).
-        found = defect_seeds(m.surface, seeds, dual,
-                             m.surface_topology.is_manifold() && (pinned || defects.empty()));
+        found =
+            defect_seeds(m.surface, seeds, dual,
+                         m.surface_topology.is_manifold() && (pinned || defects.empty()), pinned);
       }
       if (!a.missing.empty() && !out_of_time) {
         const std::size_t mended =
@@ -299,6 +311,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       report.refined += refined;
       changed += islands + refined;
     }
+    doublings = since_best > 0 && last_added > 0 && changed >= 2 * last_added ? doublings + 1 : 0;
+    last_added = changed;
     if (changed == 0) {
       if (pinned || rounds == 0 || best->assessment.topology_kept ||
           !m.surface_topology.is_manifold())
@@ -306,6 +320,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       pinned = true;
       last_round = round + 1 + kPinnedRoundsPerRound * rounds;
       since_best = 0;
+      last_added = 0;
+      doublings = 0;
       output = best->output;
       seeds = best->seeds;
       constraints = best->constraints;

@@ -37,7 +37,8 @@ struct MendReport {
 // Up to `rounds` times, while the output misses links of the feature chains, or its topology
 // differs from the surface's (non-manifold, or other components, Euler characteristic or
 // boundary loops): mends the links no single well-shaped edge flip makes (mend_missing_links),
-// puts a new surface seed in each extra piece of a cell (cell_islands), and extracts again
+// puts a new surface seed in each extra piece of a cell near the defects (cell_islands,
+// defect_seeds), and extracts again
 // (polishing around the new seeds). Each extraction is finished as it would be returned: the
 // missing links flipped in where one edge flip makes them (flip_in_links; with no angle under
 // 30°, or, for links the seeds do not mend, 15°), and corners left without a triangle at a
@@ -45,8 +46,8 @@ struct MendReport {
 // input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
 // links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
 // that round. Where the rounds end without the input's topology, up to 3 × `rounds` more start
-// from the best round: they also refine every cell piece that is not a disc, and polishing no
-// longer moves the seeds they add.
+// from the best round: they also refine every cell piece that is not a disc and every split
+// cell, wherever it is, and polishing no longer moves the seeds they add.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,

@@ -51,6 +51,36 @@ class CrossingCollector : public PolygonSink {
   std::vector<std::vector<Crossing>> chunks_;
 };
 
+// Where split cells may cause the defects of `triangles` (in seed ids): within kIslandReach times
+// its longest edge of each triangle's centroid. A thin part's cells, split around it, cause
+// defects a few cells along it (camel.off at 2k: its tail's, 0.06 from a non-manifold edge that
+// 5 rounds of refinement alone did not mend, 2 edge lengths). Split cells farther away are left
+// alone: a cell at a concave crease is often in two pieces with a triangulation right all the
+// same, and a seed in every such cell only makes more (3torus.off at 2k, adaptive: 74 for 3
+// defective triangles, 245 seeds added in all against 5).
+class DefectBalls {
+ public:
+  DefectBalls(const std::vector<Vec3>& seeds, const std::vector<Triangle>& triangles) {
+    for (const Triangle& t : triangles) {
+      const Vec3 &a = seeds[t[0]], &b = seeds[t[1]], &c = seeds[t[2]];
+      const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
+      balls_.push_back({(1.0 / 3) * (a + b + c), kIslandReach * longest});
+    }
+  }
+  bool contains(const Vec3& p) const {
+    return std::any_of(balls_.begin(), balls_.end(),
+                       [&](const Ball& b) { return distance(p, b.centre) <= b.radius; });
+  }
+
+ private:
+  static constexpr double kIslandReach = 4;
+  struct Ball {
+    Vec3 centre;
+    double radius;
+  };
+  std::vector<Ball> balls_;
+};
+
 }  // namespace
 
 OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<bool>& may_bound,
@@ -65,18 +95,21 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 }
 
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
-                         const std::vector<Triangle>& triangles, bool check_discs) {
+                         const std::vector<Triangle>& triangles, bool check_discs,
+                         bool exhaustive) {
   const RestrictedVoronoiDiagram rvd(surface, seeds);
   CellPieceCollector pieces(surface);
   CrossingCollector collector(seeds, triangles);
   PieceEulerCollector euler(surface, seeds);
-  std::vector<PolygonSink*> sinks{&pieces, &collector};
-  if (check_discs) sinks.push_back(&euler);
+  std::vector<PolygonSink*> sinks{&pieces, &collector, &euler};
   rvd.traverse(sinks);
   DefectSeeds out;
-  for (const CellIsland& island : cell_islands(pieces)) out.islands.push_back(island.centroid);
+  const DefectBalls at_defects(seeds, triangles);
+  const std::vector<PieceShape> shapes = euler.shapes(pieces);
+  for (const CellIsland& island : cell_islands(pieces))
+    if (exhaustive || triangles.empty() || at_defects.contains(island.centroid))
+      out.islands.push_back(exhaustive ? island.centroid : shapes[island.piece].farthest);
   if (check_discs) {
-    const std::vector<PieceShape> shapes = euler.shapes(pieces);
     for (std::size_t i = 0; i < shapes.size(); ++i)
       if (shapes[i].euler != 1 && pieces.pieces()[i].area > 0)
         out.islands.push_back(shapes[i].farthest);
