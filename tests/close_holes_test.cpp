@@ -10,6 +10,7 @@
 
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
+#include "geometry/self_crossings.hpp"
 #include "remesh/close_holes.hpp"
 #include "support/shapes.hpp"
 
@@ -17,8 +18,11 @@ namespace cvtmesh {
 namespace {
 
 using testing::add_quad;
+using testing::concatenate;
+using testing::cube;
 using testing::icosphere;
 using testing::torus;
+using testing::transformed;
 
 // Removes the triangles `pick` selects, returning them.
 template <class Pick>
@@ -139,6 +143,38 @@ TriangleMesh figure_eight_tube(double a, double r, int nu, int nv) {
     for (int j = 0; j < nv; ++j)
       add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
   return m;
+}
+
+std::size_t count_true(const std::vector<bool>& flags) {
+  return static_cast<std::size_t>(std::count(flags.begin(), flags.end(), true));
+}
+
+TEST(SelfCrossings, FoundWhereSheetsCrossAndNowhereElse) {
+  // Closed surfaces whose triangles meet only at shared edges and vertices: none.
+  EXPECT_EQ(count_true(self_crossing_triangles(torus(1, 0.3, 40, 16))), 0u);
+  EXPECT_EQ(count_true(self_crossing_triangles(cube(6))), 0u);
+  // Two spheres of radius 1, their centres 1 apart, in one mesh: the triangles along the circle
+  // where they cross (|x - 0.5| small on the first), and only those.
+  const TriangleMesh a = icosphere(3);
+  const TriangleMesh both = concatenate(a, transformed(a, 1, {1, 0, 0}));
+  const std::vector<bool> crossing = self_crossing_triangles(both);
+  EXPECT_GT(count_true(crossing), 0u);
+  const double edge = distance(a.vertices[a.triangles[0][0]], a.vertices[a.triangles[0][1]]);
+  for (std::size_t t = 0; t < a.triangles.size(); ++t) {
+    if (!crossing[t]) continue;
+    const Triangle& tri = both.triangles[t];
+    bool near = false;
+    for (const Index v : tri) near = near || std::abs(both.vertices[v].x - 0.5) < 2 * edge;
+    EXPECT_TRUE(near) << "triangle " << t;
+  }
+  // Two triangles sharing a vertex: crossing when the edge opposite it passes through the other.
+  TriangleMesh fan{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.2, 0.2, -1}, {0.3, 0.2, 1}}, {{0, 1, 2}}};
+  fan.triangles.push_back({0, 3, 4});
+  EXPECT_EQ(count_true(self_crossing_triangles(fan)), 2u);
+  fan.vertices[4] = {0.3, 0.2, -0.5};  // both below the first: they share the vertex only
+  EXPECT_EQ(count_true(self_crossing_triangles(fan)), 0u);
+  // The tube pressed through itself crosses itself along most of its length.
+  EXPECT_GT(count_true(self_crossing_triangles(figure_eight_tube(0.15, 0.15, 240, 24))), 1000u);
 }
 
 TEST(SelfCrossingInput, ATubePressedThroughItselfKeepsItsTopology) {

@@ -17,6 +17,7 @@
 #include "cvtmesh/topology.hpp"
 #include "features/curve_projector.hpp"
 #include "features/feature_seeds.hpp"
+#include "geometry/surface_projector.hpp"
 #include "remesh/flip_links.hpp"
 #include "remesh/mend_topology.hpp"
 #include "remesh/output_defects.hpp"
@@ -104,18 +105,30 @@ TEST(DefectSeeds, SplitCellsGetSeedsNearTheDefectsAtTheirFarthestVertices) {
 
   // Refinement near the defects: the far piece's vertex farthest from its seed, which is in the
   // seed's cell (no seed nearer) and farther from it than the piece's centroid.
-  const DefectSeeds near = defect_seeds(plate, seeds, {{0, 1, 2}}, false, false);
+  const DefectSeeds near =
+      defect_seeds(plate, seeds, {{0, 1, 2}}, false, SplitCells::near_triangles, nullptr);
   ASSERT_EQ(near.islands.size(), 1u);
   const Vec3 p = near.islands[0];
   EXPECT_NEAR(p.z, -0.01, 1e-12);
   for (const Vec3& s : seeds) EXPECT_LE(distance(p, seeds[0]), distance(p, s) + 1e-12);
   EXPECT_GT(distance(p, seeds[0]), distance(islands[0].centroid, seeds[0]) + 0.1);
-  // Without defects to show where, every split cell is seeded.
-  EXPECT_EQ(defect_seeds(plate, seeds, {}, false, false).islands.size(), 1u);
+  // Everywhere, as where no defect shows where.
+  EXPECT_EQ(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, nullptr)
+                .islands.size(),
+            1u);
   // A split cell far from the only defect is left alone.
-  EXPECT_TRUE(defect_seeds(plate, seeds, {{9, 10, 11}}, false, false).islands.empty());
+  EXPECT_TRUE(defect_seeds(plate, seeds, {{9, 10, 11}}, false, SplitCells::near_triangles, nullptr)
+                  .islands.empty());
+  // None where the piece reaches a crossing of the input's sheets (here a triangle standing for
+  // one, over the far piece).
+  const TriangleMesh crossing{{{-0.1, -0.1, -0.01}, {0.1, -0.1, -0.01}, {0, 0.1, -0.01}},
+                              {{0, 1, 2}}};
+  const SurfaceProjector at(crossing);
+  EXPECT_TRUE(
+      defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, &at).islands.empty());
   // The paper's rule, exhaustive: every split cell, at its extra piece's centroid.
-  const DefectSeeds all = defect_seeds(plate, seeds, {{9, 10, 11}}, false, true);
+  const DefectSeeds all = defect_seeds(plate, seeds, {{9, 10, 11}}, false,
+                                       SplitCells::at_centroids_everywhere, nullptr);
   ASSERT_EQ(all.islands.size(), 1u);
   EXPECT_EQ(all.islands[0], islands[0].centroid);
 }

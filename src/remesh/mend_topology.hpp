@@ -47,7 +47,8 @@ struct MendReport {
 // links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
 // that round. Where the rounds end without the input's topology, up to 3 × `rounds` more start
 // from the best round: they also refine every cell piece that is not a disc and every split
-// cell, wherever it is, and polishing no longer moves the seeds they add.
+// cell, wherever it is, and polishing no longer moves the seeds they add. No split cell is
+// seeded where the input crosses itself.
 // Independent of the thread count.
 PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
                              std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,

@@ -5,6 +5,7 @@
 #include "cvt/cell_islands.hpp"
 #include "cvtmesh/rvd.hpp"
 #include "geometry/manifold_defects.hpp"
+#include "geometry/surface_projector.hpp"
 #include "voronoi/dual_triangle.hpp"
 #include "voronoi/piece_euler.hpp"
 
@@ -51,13 +52,13 @@ class CrossingCollector : public PolygonSink {
   std::vector<std::vector<Crossing>> chunks_;
 };
 
-// Where split cells may cause the defects of `triangles` (in seed ids): within kIslandReach times
-// its longest edge of each triangle's centroid. A thin part's cells, split around it, cause
-// defects a few cells along it (camel.off at 2k: its tail's, 0.06 from a non-manifold edge that
-// 5 rounds of refinement alone did not mend, 2 edge lengths). Split cells farther away are left
-// alone: a cell at a concave crease is often in two pieces with a triangulation right all the
-// same, and a seed in every such cell only makes more (3torus.off at 2k, adaptive: 74 for 3
-// defective triangles, 245 seeds added in all against 5).
+// Where split cells may cause the defects of `triangles` (in seed ids): the balls around each
+// triangle's centroid whose radius is kIslandReach times its longest edge. A thin part's cells,
+// split around it, cause defects a few cells along it (camel.off at 2k: its tail's, 0.06 from a
+// non-manifold edge that 5 rounds of refinement alone did not mend, 2 edge lengths). Split cells
+// farther away are left alone: a cell at a concave crease is often in two pieces with a
+// triangulation right all the same, and a seed in every such cell only makes more (3torus.off at
+// 2k, adaptive: 74 for 3 defective triangles, 245 seeds added in all against 5).
 class DefectBalls {
  public:
   DefectBalls(const std::vector<Vec3>& seeds, const std::vector<Triangle>& triangles) {
@@ -96,23 +97,35 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
-                         bool exhaustive) {
+                         SplitCells split_cells, const SurfaceProjector* crossings) {
+  const bool exhaustive = split_cells == SplitCells::at_centroids_everywhere;
+  const bool everywhere = split_cells != SplitCells::near_triangles;
   const RestrictedVoronoiDiagram rvd(surface, seeds);
   CellPieceCollector pieces(surface);
   CrossingCollector collector(seeds, triangles);
   PieceEulerCollector euler(surface, seeds);
-  std::vector<PolygonSink*> sinks{&pieces, &collector, &euler};
+  std::vector<PolygonSink*> sinks{&pieces, &collector};
+  if (check_discs || !exhaustive) sinks.push_back(&euler);  // the pieces' farthest vertices
   rvd.traverse(sinks);
   DefectSeeds out;
   const DefectBalls at_defects(seeds, triangles);
-  const std::vector<PieceShape> shapes = euler.shapes(pieces);
+  const std::vector<PieceShape> shapes =
+      check_discs || !exhaustive ? euler.shapes(pieces) : std::vector<PieceShape>{};
+  // A piece that reaches a crossing of the input's sheets is left alone, as no seed splits it
+  // off: the sheets cross within the piece's reach from its seed.
+  const auto at_crossing = [&](const Vec3& p, Index seed) {
+    return crossings && distance(p, crossings->nearest(p).point) <= distance(p, seeds[seed]);
+  };
   for (const CellIsland& island : cell_islands(pieces))
-    if (exhaustive || triangles.empty() || at_defects.contains(island.centroid))
+    if ((everywhere || at_defects.contains(island.centroid)) &&
+        !at_crossing(island.centroid, island.seed))
       out.islands.push_back(exhaustive ? island.centroid : shapes[island.piece].farthest);
   if (check_discs) {
-    for (std::size_t i = 0; i < shapes.size(); ++i)
-      if (shapes[i].euler != 1 && pieces.pieces()[i].area > 0)
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      const CellPiece& piece = pieces.pieces()[i];
+      if (shapes[i].euler != 1 && piece.area > 0 && !at_crossing(shapes[i].farthest, piece.seed))
         out.islands.push_back(shapes[i].farthest);
+    }
   }
   std::vector<Vec3>& kept = out.refinement;
   std::vector<double> radius;

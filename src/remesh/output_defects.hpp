@@ -12,6 +12,10 @@
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
+class SurfaceProjector;
+}
+
+namespace cvtmesh {
 
 struct OutputDefects {
   std::vector<Triangle> triangles;  // every triangle at a defect, as in the triangulation
@@ -48,18 +52,22 @@ struct DefectSeeds {
 // checked for being discs only with `check_discs` (for a manifold surface: around a non-manifold
 // input edge or vertex a piece is no surface, and its count says nothing); a piece that is not
 // one gets a seed at its vertex farthest from its seed.
-// Split cells get seeds in one of two ways:
-// - `exhaustive`, the paper's rule (§4.4): a seed at the centroid of every extra piece;
-// - otherwise, only the extra pieces near `triangles` (all, if there are none), each at its vertex
-//   farthest from its seed. That vertex is as far from every other seed as from its own, so a
-//   seed there keeps the spacing at the piece's reach, as Delaunay refinement does, where a
-//   centroid can fall next to the seed and split again; and split cells far from any defect,
-//   often right as they are (at concave creases), are left alone. At 2k on the 56 shared meshes
-//   (--seed 1, 2, 3) this added 1,659, 1,553 and 1,538 seeds where the paper's rule in every round
-//   added 2,249, 4,101 and 2,303, and the quality bar of issue 20 was met on 43, 41 and 42 meshes
-//   against 42, 40 and 42. Where the defects persist, the paper's rule resolves handles far finer
-//   than the spacing (femur.off at 1k) that the farthest vertices leave.
+// Split cells get seeds in one of three ways:
+// - at_centroids_everywhere, the paper's rule (§4.4): a seed at the centroid of every extra piece;
+// - farthest_everywhere or near_triangles: a seed at each extra piece's vertex farthest from its
+//   seed, everywhere or only near `triangles`. That vertex is as far from every other seed as
+//   from its own, so a seed there keeps the spacing at the piece's reach, as Delaunay refinement
+//   does, where a centroid can fall next to the seed and split again; and split cells far from
+//   any defect, often right as they are (at concave creases), are left alone. At 2k on the 56
+//   shared meshes (--seed 1, 2, 3) this added 1,659, 1,553 and 1,538 seeds where the paper's rule
+//   in every round added 2,249, 4,101 and 2,303, and the quality bar of issue 20 was met on 43,
+//   41 and 42 meshes against 42, 40 and 42. Where the defects persist, the paper's rule resolves
+//   handles far finer than the spacing (femur.off at 1k) that the farthest vertices leave.
+// No piece gets a seed where it reaches `crossings` (the input's triangles that cross another;
+// null: none) within its reach from its seed.
+enum class SplitCells { near_triangles, farthest_everywhere, at_centroids_everywhere };
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
-                         const std::vector<Triangle>& triangles, bool check_discs, bool exhaustive);
+                         const std::vector<Triangle>& triangles, bool check_discs,
+                         SplitCells split_cells, const SurfaceProjector* crossings);
 
 }  // namespace cvtmesh
