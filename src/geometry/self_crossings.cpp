@@ -18,9 +18,9 @@ Kernel::Point_3 point(const Vec3& v) {
   return {v.x, v.y, v.z};
 }
 
-// Whether triangles `a` and `b`, which share vertex ids `shared` (at most one), intersect other
-// than at that vertex: for one shared vertex, whether the edge of either opposite it meets the
-// other triangle.
+// Whether triangles `a` and `b` intersect other than at the vertices they share: none shared, by
+// the exact triangle test; one, whether the edge of either opposite it meets the other; two or
+// three (an edge, a duplicate), never.
 bool cross(const TriangleMesh& mesh, const Triangle& a, const Triangle& b) {
   const auto tri = [&](const Triangle& t) {
     return Kernel::Triangle_3(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]),

@@ -169,10 +169,10 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     const auto n = static_cast<double>(vertices);
     double k = std::sqrt(count(1.0) / n);
     for (int step = 0; step < 12; ++step) {
-      // The sizes of the k that reaches the count are the field: not graded again.
-      std::vector<double> sizes = scaled_sizes(mesh, h, used, k, s);
-      const double c = SizeField(mesh, sizes).vertex_count();
-      if (std::abs(c / n - 1) < 1e-3) return SizeField(mesh, std::move(sizes));
+      // The field of the k that reaches the count is returned as it is: not graded again.
+      SizeField field(mesh, scaled_sizes(mesh, h, used, k, s));
+      const double c = field.vertex_count();
+      if (std::abs(c / n - 1) < 1e-3) return field;
       k *= std::sqrt(c / n);
     }
     double lo = std::log(k) - 20, hi = std::log(k) + 20;
