@@ -14,6 +14,7 @@
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
+#include "features/edge_uses.hpp"
 #include "features/twin_curves.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
@@ -182,6 +183,30 @@ TEST(Features, JaggedFoldsAreNoCreasesAtTheOutputScaleButFlatSidedCreasesAre) {
   EXPECT_EQ(detect_features(half, s).edges.size(), 12u);  // the 12 boundary edges
 }
 
+// A low-poly closed shape: an icosphere of 80 triangles, every third vertex pushed out by 60%.
+// 14 of its edges fold by more than 60° between facets that are flat at any finer scale, amid
+// edges that all bend by 6° or more: the faceting of a smooth shape, no crease (issue 18 item 5:
+// hand.off, pig.off, cow.off at 5k kept such folds and lost up to 23° of θmin to them).
+TriangleMesh low_poly_blob() {
+  TriangleMesh m = testing::icosphere(1);
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    if (v % 3 == 0) m.vertices[v] = 1.6 * m.vertices[v];
+  return m;
+}
+
+TEST(Features, FoldsOfALowPolyModelAreNoCreasesAtAFinerScaleButAPolyhedronsAre) {
+  const TriangleMesh blob = low_poly_blob();
+  FeatureSettings s;
+  s.scale = 0.01;              // far finer than its facets, which are about 0.6 across
+  s.creases_at_scale = false;  // a feature angle given: its folds are forced
+  const std::size_t forced = detect_features(blob, s).edges.size();
+  EXPECT_EQ(forced, 14u);
+  s.creases_at_scale = true;
+  EXPECT_TRUE(detect_features(blob, s).empty());
+  // A cube of 2 × 2 grid cells a side, as coarse, has flat faces around its creases: all kept.
+  EXPECT_EQ(detect_features(testing::cube(2), s).curves.size(), 12u);
+}
+
 // A cube (side 2, 8 grid cells a side) with a ridge on its top face: 5 grid vertices in a row
 // raised by a grid cell. The ridge folds by 90° and, with a grid diagonal at each end, is 1.87
 // long; it ends in the flat face, meeting no other feature.
@@ -267,6 +292,49 @@ TEST(FeaturesSharedData, OrganicModelsKeepNoTwinCreasesAtTheOutputScale) {
     FeatureSettings s;
     s.scale = std::sqrt(surface_area(in) / (std::sqrt(3.0) / 2 * 5000));
     EXPECT_GE(narrowest_feature_sector_deg(in, detect_features(in, s)), 30.0) << name;
+  }
+}
+
+// Issue 18 item 5: by default, the folds of low-poly and scanned organic models are no features
+// at any output scale (hand.off at 5k kept 105 edges of them: θmin 23° against 40° without), and
+// the creases of CAD parts and polyhedra all stay.
+TEST(FeaturesSharedData, OrganicModelsKeepNoFoldAndCadPartsEveryCrease) {
+  if (!std::filesystem::exists(shared_data() / "corpus" / "hand.off"))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  // The sharp edges among f's: edges of two triangles.
+  const auto sharp = [](const TriangleMesh& m, const Features& f) {
+    const std::vector<EdgeUse> uses = edge_uses(m);
+    std::size_t n = 0;
+    for (const Edge& e : f.edges) {
+      const auto first = std::lower_bound(
+          uses.begin(), uses.end(), e, [](const EdgeUse& u, const Edge& x) { return u.edge < x; });
+      n += uses.end() - first >= 2 && first[1].edge == e &&
+           (uses.end() - first == 2 || first[2].edge != e);
+    }
+    return n;
+  };
+  const auto scale = [](const TriangleMesh& m, double n) {
+    return std::sqrt(surface_area(m) / (std::sqrt(3.0) / 2 * n));
+  };
+  for (const char* name : {"corpus/hand.off", "corpus/pig.off", "corpus/cow.off",
+                           "corpus/bones.off", "corpus/helmet.off", "corpus/tripod.off"}) {
+    const TriangleMesh in = shared_mesh(name);
+    FeatureSettings s;
+    EXPECT_GT(sharp(in, detect_features(in, s)), 20u) << name;  // folds over 60°
+    for (const double n : {1000.0, 5000.0, 10000.0}) {
+      s.scale = scale(in, n);
+      EXPECT_EQ(sharp(in, detect_features(in, s)), 0u) << name << " at " << n;
+    }
+  }
+  for (const char* name : {"fandisk.off", "joint.off", "anchor.off", "corpus/part.off",
+                           "corpus/u.off", "corpus/pipe.off", "cube.off", "corpus/3torus.off"}) {
+    const TriangleMesh in = shared_mesh(name);
+    FeatureSettings s;
+    const std::size_t all = sharp(in, detect_features(in, s));
+    for (const double n : {5000.0, 10000.0}) {
+      s.scale = scale(in, n);
+      EXPECT_EQ(sharp(in, detect_features(in, s)), all) << name << " at " << n;
+    }
   }
 }
 

@@ -195,7 +195,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
              "--feature-angle", o->settings.features.angle_deg,
              "Sharp edge: its faces' normals differ by more than this (deg). Given, it forces "
              "them; by default, only creases with flat sides at the output's "
-             "scale are kept")
+             "scale, amid an input that is smooth at its own resolution, are kept")
           ->default_val(60)
           ->check(CLI::Range(0.0, 180.0));
   cmd->add_flag("--no-features", o->no_features,

@@ -24,7 +24,9 @@ struct FeatureSettings {
   // and, with `creases_at_scale`, when they do not fold by `angle_deg` between sides that are
   // flat within this distance (a jagged fold of a coarse organic model or a noisy scan, whose
   // tracing costs angles and topology; CAD creases have flat or gently curved sides), or when
-  // free at both ends (meeting no other feature) and shorter than 8 times it (a fold of an
+  // the input around the curves they are connected to bends at its own resolution (the median
+  // dihedral angle of the other edges there is over a tenth of `angle_deg` along most of them:
+  // the folds of a low-poly organic model, flat-sided at a finer scale), or when free at both ends (meeting no other feature) and shorter than 8 times it (a fold of an
   // organic model's polygons; CAD creases end where they meet other creases), or when another
   // curve joins the same two corners within half of it all along (twins: one is kept, the
   // shorter). With `creases_at_scale`, a sharp turn is a corner only where both its curves are

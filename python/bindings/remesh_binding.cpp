@@ -201,7 +201,8 @@ seed : int, default 1
     Random seed of the initial sampling: same seed, same output, on any thread count.
 feature_angle : float, degrees
     Sharp edge: its faces' normals differ by more than this. Given, it forces these creases;
-    by default (60) only creases with flat sides at the output's scale are kept.
+    by default (60) only creases with flat sides at the output's scale, amid an input that
+    is smooth at its own resolution, are kept.
 no_features : bool, default False
     Keep no sharp edges (boundaries and feature_edges are still kept).
 feature_edges : str or (k, 2) int array

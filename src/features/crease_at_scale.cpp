@@ -15,6 +15,8 @@ constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 constexpr std::size_t kMeasuredEdges = 9;  // per curve: enough for a vote, cheap on long curves
 // The narrowest side a crease may have, against the scale (see is_crease).
 constexpr double kNarrowestSide = 0.3;
+// The most the input may bend around a crease, against the feature angle (see is_crease).
+constexpr double kInputBendShare = 0.1;
 
 Vec3 raw_normal(const TriangleMesh& mesh, std::size_t t) {
   const auto [a, b, c] = mesh.corners(t);
@@ -26,6 +28,17 @@ double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const double dd = dot(d, d);
   const double t = dd > 0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
   return distance(p, a + t * d);
+}
+
+// How many of a curve's edges are measured, and the i-th of them, spread along it.
+std::size_t measured_edges(const FeatureCurve& curve) {
+  return std::min(curve.vertices.size() - (curve.closed ? 0 : 1), kMeasuredEdges);
+}
+
+Edge measured_edge(const FeatureCurve& curve, std::size_t i, std::size_t measured) {
+  const std::size_t edges = curve.vertices.size() - (curve.closed ? 0 : 1);
+  const std::size_t k = (2 * i + 1) * edges / (2 * measured);
+  return edge_of(curve.vertices[k], curve.vertices[(k + 1) % curve.vertices.size()]);
 }
 
 double angle_deg(const Vec3& u, const Vec3& v) {
@@ -48,6 +61,48 @@ CreaseScale::CreaseScale(const TriangleMesh& mesh, const std::vector<EdgeUse>& u
     }
     k = end;
   }
+  around_start_.assign(mesh.vertices.size() + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (Index v : t) ++around_start_[v + 1];
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) around_start_[v + 1] += around_start_[v];
+  around_.resize(around_start_.back());
+  std::vector<std::size_t> fill(around_start_.begin(), around_start_.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (Index v : mesh.triangles[t]) around_[fill[v]++] = t;
+}
+
+double CreaseScale::dihedral_deg(std::size_t t, int k) const {
+  const std::size_t u = across(t, k);
+  const Triangle& tt = mesh_.triangles[t];
+  // Consistent neighbours run their shared edge in opposite directions.
+  const double sign = runs_forward(mesh_.triangles[u], tt[k], tt[(k + 1) % 3]) ? -1 : 1;
+  return angle_deg(raw_normal(mesh_, t), sign * raw_normal(mesh_, u));
+}
+
+double CreaseScale::input_bend_deg(const Edge& edge) const {
+  struct Slot {
+    Edge edge;
+    std::size_t triangle;
+    int k;
+  };
+  std::vector<Slot> slots;
+  for (const Index v : edge)
+    for (std::size_t s = around_start_[v]; s < around_start_[v + 1]; ++s)
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t t = around_[s];
+        const Triangle& tt = mesh_.triangles[t];
+        if (across(t, k) != kNone) slots.push_back({edge_of(tt[k], tt[(k + 1) % 3]), t, k});
+      }
+  std::sort(slots.begin(), slots.end(),
+            [](const Slot& x, const Slot& y) { return x.edge < y.edge; });
+  std::vector<double> bends;
+  for (std::size_t i = 0; i < slots.size(); ++i)
+    if (i == 0 || slots[i].edge != slots[i - 1].edge)
+      bends.push_back(dihedral_deg(slots[i].triangle, slots[i].k));
+  if (bends.empty()) return 0;
+  const auto middle = bends.begin() + static_cast<std::ptrdiff_t>(bends.size() / 2);
+  std::nth_element(bends.begin(), middle, bends.end());
+  return *middle;
 }
 
 CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& centre,
@@ -133,17 +188,23 @@ CreaseScale::Measure CreaseScale::measure(const Edge& edge, double radius) const
 }
 
 bool CreaseScale::is_crease(const FeatureCurve& curve, double scale, double angle_deg) const {
-  const std::size_t edges = curve.vertices.size() - (curve.closed ? 0 : 1);
-  const std::size_t measured = std::min(edges, kMeasuredEdges);
+  const std::size_t measured = measured_edges(curve);
   std::size_t passed = 0;
   for (std::size_t i = 0; i < measured; ++i) {
-    const std::size_t k = (2 * i + 1) * edges / (2 * measured);  // spread along the curve
-    const Edge e = edge_of(curve.vertices[k], curve.vertices[(k + 1) % curve.vertices.size()]);
-    const Measure m = measure(e, scale);
+    const Measure m = measure(measured_edge(curve, i, measured), scale);
     passed += m.fold_deg >= angle_deg && m.roughness_deg <= angle_deg / 6 &&
               m.width >= kNarrowestSide * scale;
   }
   return 2 * passed >= measured;
+}
+
+CreaseScale::Votes CreaseScale::smooth_around(const FeatureCurve& curve, double angle_deg) const {
+  Votes votes;
+  votes.measured = measured_edges(curve);
+  for (std::size_t i = 0; i < votes.measured; ++i)
+    votes.smooth +=
+        input_bend_deg(measured_edge(curve, i, votes.measured)) <= kInputBendShare * angle_deg;
+  return votes;
 }
 
 }  // namespace cvtmesh

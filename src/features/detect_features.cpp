@@ -261,9 +261,28 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     const std::vector<bool> twin =
         settings.creases_at_scale ? twin_curves(mesh, f.curves, lengths, droppable, settings.scale)
                                   : std::vector<bool>(f.curves.size(), false);
+    // Whether the input is smooth around a network of connected curves is voted on by the
+    // network as a whole: the creases of a polyhedron or a CAD part are kept or dropped together
+    // (tripod.off at 1k: 3 of its 22 folds kept cost 2° of θmin against none, and 1.7° against
+    // all).
+    UnionFind networks(mesh.vertices.size());
+    for (const Edge& e : f.edges) networks.unite(e[0], e[1]);
+    std::vector<CreaseScale::Votes> smooth(mesh.vertices.size());  // per network root
+    if (settings.creases_at_scale)
+      for (std::size_t c = 0; c < f.curves.size(); ++c)
+        if (droppable[c]) {
+          const CreaseScale::Votes v = creases.smooth_around(f.curves[c], settings.angle_deg);
+          CreaseScale::Votes& total = smooth[networks.find(f.curves[c].vertices[0])];
+          total.smooth += v.smooth;
+          total.measured += v.measured;
+        }
+    auto rough_around = [&](std::size_t c) {
+      const CreaseScale::Votes& v = smooth[networks.find(f.curves[c].vertices[0])];
+      return 2 * v.smooth < v.measured;
+    };
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
-      if (droppable[c] && (twin[c] || !feature_at_scale(c)))
+      if (droppable[c] && (twin[c] || rough_around(c) || !feature_at_scale(c)))
         dropped.insert(dropped.end(), curve_edges[c].begin(), curve_edges[c].end());
     if (!dropped.empty()) {
       std::sort(dropped.begin(), dropped.end());
