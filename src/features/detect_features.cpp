@@ -263,8 +263,8 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
                                   : std::vector<bool>(f.curves.size(), false);
     // Whether the input is smooth around a network of connected curves is voted on by the
     // network as a whole: the creases of a polyhedron or a CAD part are kept or dropped together
-    // (tripod.off at 1k: 3 of its 22 folds kept cost 2° of θmin against none, and 1.7° against
-    // all).
+    // (tripod.off at 1k, each curve voting alone, kept 9 of its 22 folds: θmin 1.9° under what
+    // none gave, 3.6° under all).
     UnionFind networks(mesh.vertices.size());
     for (const Edge& e : f.edges) networks.unite(e[0], e[1]);
     std::vector<CreaseScale::Votes> smooth(mesh.vertices.size());  // per network root
