@@ -46,6 +46,26 @@ TEST(ImproveShapes, FlipsTheLongDiagonalOfAFlatPair) {
   EXPECT_EQ(mesh.vertices, flat_pair().vertices);  // all on the boundary: none moves
 }
 
+// A pair on a cylinder of radius 1 split along a chord of its circumference, a-b, 0.69 long,
+// with c and d on the cylinder 0.15 above and below the chord's middle: angles of about 25° at
+// a and b, and the two triangles fold by about 44° along the chord. The other diagonal, c-d, lies
+// on the cylinder (corpus/cow.off at 1k, couplingdown.off at 5k: their worst triangles were such
+// pairs, left alone while flips needed a fold under 20°).
+TEST(ImproveShapes, FlipsAcrossAGentleFoldOfACurvedSurface) {
+  const double half = 0.35;  // radians: a and b at ∓half around the axis, c and d at 0
+  TriangleMesh mesh{{{std::cos(half), -std::sin(half), 0},
+                     {std::cos(half), std::sin(half), 0},
+                     {1, 0, 0.15},
+                     {1, 0, -0.15}},
+                    {{0, 1, 2}, {1, 0, 3}}};
+  const double before = measure_quality(mesh).angle_min_deg;
+  const TriangleMesh cylinder = testing::cylinder(64, 512);
+  const SurfaceProjector surface(cylinder);
+  EXPECT_EQ(improve_shapes(mesh, surface, nullptr, {}, {}, 5).flips, 1u);
+  EXPECT_TRUE(has_edge(mesh, 2, 3));
+  EXPECT_GT(measure_quality(mesh).angle_min_deg, before + 5);
+}
+
 TEST(ImproveShapes, NeverFlipsAFeatureEdge) {
   TriangleMesh mesh = flat_pair();
   const SurfaceProjector surface(mesh);
