@@ -329,7 +329,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   std::vector<bool> removable;
   for (const VertexSupport& s : supports)
     removable.push_back(s.kind == VertexSupport::Kind::surface);
-  result.valence_three_removed = remove_valence_three(result.mesh, removable);
+  result.valence_three_removed = remove_valence_three(result.mesh, removable, *projector);
   if (result.valence_three_removed > 0) drop_unused_vertices(result);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);

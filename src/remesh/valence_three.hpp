@@ -13,11 +13,14 @@
 
 namespace cvtmesh {
 
+class SurfaceProjector;
+
 // Replaces the three triangles of each vertex with `removable` set and three triangles around it
 // (a closed fan) with the triangle of its three neighbours when: no triangle of those three
 // exists already; its min(Q, θmin / 60°) is above the worst of the three's; the vertex lies
-// within a fifth of its longest edge of its plane; and it turns no triangle's normal by more
-// than 45°. The vertex is left unused. Returns how many were removed.
-std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& removable);
+// within a fifth of its longest edge of its plane; and its centroid is about as close to
+// `surface` as the three's were. The vertex is left unused. Returns how many were removed.
+std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& removable,
+                                 const SurfaceProjector& surface);
 
 }  // namespace cvtmesh
