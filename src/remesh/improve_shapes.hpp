@@ -40,7 +40,7 @@ struct ShapeImprovement {
 // point on `surface`, curve vertices stay on their curve of `curves` (needed when any vertex is a
 // curve vertex), if one or two feature edges meet there. Vertices on boundary or non-manifold
 // edges, other than curve vertices on a boundary between their two feature edges, and tips and
-// saddles of the surface (angle defect over 20°; curve vertices excepted), never move.
+// saddles of the surface (angle defect over 30°; curve vertices excepted), never move.
 // `feature_edges` (sorted) never flip, and of the others only those with exactly two triangles,
 // which use them in opposite directions. Each change keeps the triangles it touches about as close
 // to the surface as they were. Sequential, in a fixed order: the result does not depend on the
