@@ -64,7 +64,8 @@ class CreaseScale {
   // The triangle across t's edge k = (t[k], t[k+1]), or none for an edge of other than two
   // triangles or on the barrier.
   std::size_t across(std::size_t t, int k) const { return across_[3 * t + k]; }
-  double dihedral_deg(std::size_t t, int k) const;  // across edge k; the edge must have a twin
+  // The angle between the normals of t and the triangle across its edge k (there must be one).
+  double dihedral_deg(std::size_t t, int k) const;
   double input_bend_deg(const Edge& edge) const;
 
   const TriangleMesh& mesh_;
