@@ -1,7 +1,7 @@
 // The output's last touch (issue 18, item 6): the restricted Delaunay triangulation of seeds that
 // an iteration cap stopped short of a centroidal tessellation, or that topology control added at
 // details finer than the spacing, has a few badly shaped triangles left. Around them, this step
-// flips edges between nearly coplanar triangles and moves vertices towards the centre of their
+// flips edges between triangles that fold little and moves vertices towards the centre of their
 // star, back onto the input surface, as tangential relaxation does in CGAL's and pmp-library's
 // remeshers, then searches around each vertex still at a bad triangle for a better place (on the
 // surface, or along its feature curve for a vertex that traces one). Neither changes the
