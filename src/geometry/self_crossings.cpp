@@ -69,4 +69,13 @@ std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
   return crossing;
 }
 
+std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh) {
+  const std::vector<bool> crossing = self_crossing_triangles(mesh);
+  TriangleMesh part{mesh.vertices, {}};
+  for (std::size_t t = 0; t < crossing.size(); ++t)
+    if (crossing[t]) part.triangles.push_back(mesh.triangles[t]);
+  if (part.triangles.empty()) return nullptr;
+  return std::make_unique<SurfaceProjector>(part);
+}
+
 }  // namespace cvtmesh

@@ -4,14 +4,19 @@
 // surface's topology (README: topology control, the last step).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
+#include "geometry/surface_projector.hpp"
 
 namespace cvtmesh {
 
 // Per triangle of `mesh`, whether it crosses another (exact predicates). Triangles that share an
 // edge are not tested: their overlap would be a fold, not a crossing.
 std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh);
+
+// Those triangles as a surface to measure distances to, or null where there are none.
+std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh);
 
 }  // namespace cvtmesh

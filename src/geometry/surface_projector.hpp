@@ -22,6 +22,8 @@ class SurfaceProjector {
   // The same, starting the search from a foot found earlier for a point nearby (much faster
   // when the point has moved little, as seeds do between CVT iterations).
   Foot nearest(const Vec3& p, const Foot& hint) const;
+  // The distance from p to the surface.
+  double distance_to(const Vec3& p) const { return distance(p, nearest(p).point); }
   // The squared distance from p to one triangle (as numbered inside the projector): an upper
   // bound on the squared distance to the surface, far cheaper than a search.
   double squared_distance_to(const Vec3& p, std::size_t triangle) const;

@@ -266,7 +266,7 @@ class ShapeImprover {
     }
     return d;
   }
-  double gap_at(const Vec3& p) const { return distance(p, surface_.nearest(p).point); }
+  double gap_at(const Vec3& p) const { return surface_.distance_to(p); }
   Vec3 centroid(Index t) const {
     const auto [a, b, c] = mesh_.corners(t);
     return (1.0 / 3) * (a + b + c);

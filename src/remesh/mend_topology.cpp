@@ -167,19 +167,6 @@ std::vector<bool> branch_seeds(const MendContext& m, const SpecialEdges& special
   return seeds_on(special.branch_curve, special.branch_vertex, m, constraints, rdt.vertices.size());
 }
 
-// The input's triangles that cross another, if any: where no split cell is seeded, as no seed
-// separates sheets that cross (at 5k, adaptive, cow.off went from 904 seeds added and θmin 0.4°
-// to 30 and 21.8°, man.off from 665 seeds added to 84). Found only for an output without the
-// input's topology: found for every run, it added about 0.3 s to igea's 2.2 s at 10k.
-std::unique_ptr<SurfaceProjector> crossing_triangles(const TriangleMesh& surface) {
-  const std::vector<bool> crossing = self_crossing_triangles(surface);
-  TriangleMesh part{surface.vertices, {}};
-  for (std::size_t t = 0; t < crossing.size(); ++t)
-    if (crossing[t]) part.triangles.push_back(surface.triangles[t]);
-  if (part.triangles.empty()) return nullptr;
-  return std::make_unique<SurfaceProjector>(part);
-}
-
 // Whether the triangle of seeds `t` is at a crossing of the input's sheets: one reaches the
 // ball around its centroid whose radius is its longest edge. Refining there only makes smaller
 // defects, round after round (man.off at 2k, --seed 2: 2,415 seeds added and θmin 0.4° where the
@@ -191,7 +178,7 @@ bool at_crossing(const SurfaceProjector& crossings, const std::vector<Vec3>& see
   const Vec3 &a = seeds[t[0]], &b = seeds[t[1]], &c = seeds[t[2]];
   const Vec3 centre = (1.0 / 3) * (a + b + c);
   const double reach = std::max({distance(a, b), distance(b, c), distance(c, a)});
-  return distance(centre, crossings.nearest(centre).point) <= reach;
+  return crossings.distance_to(centre) <= reach;
 }
 
 // An extraction, finished as it would be returned, and what it lacks: the links it cuts that
@@ -281,7 +268,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   // three times as many rounds, with the seeds they add pinned (see kRoundsWithoutProgress).
   PolishSettings polish = m.polish;
   bool pinned = false;
-  std::unique_ptr<SurfaceProjector> crossings;  // found at the first output without the topology
+  // No split cell is seeded where the input crosses itself, as no seed separates sheets that
+  // cross (at 5k, adaptive, cow.off went from 904 seeds added and θmin 0.4° to 30 and 21.8°,
+  // man.off from 665 seeds added to 84). Searched only for an output without the input's
+  // topology: searched for every run, it added about 0.3 s to igea's 2.2 s at 10k.
+  std::unique_ptr<SurfaceProjector> crossings;
   bool crossings_found = false;
   int last_round = rounds;
   for (int round = 0;; ++round) {
@@ -314,7 +305,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       if (!a.topology_kept) {
         const OutputDefects& defects = a.defects;
         if (!crossings_found) {
-          crossings = crossing_triangles(m.surface);
+          crossings = crossing_surface(m.surface);
           crossings_found = true;
         }
         std::vector<Triangle> dual;  // the defects' triangles, in seeds

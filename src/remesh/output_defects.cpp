@@ -114,7 +114,7 @@ DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& s
   // A piece that reaches a crossing of the input's sheets is left alone, as no seed splits it
   // off: the sheets cross within the piece's reach from its seed.
   const auto at_crossing = [&](const Vec3& p, Index seed) {
-    return crossings && distance(p, crossings->nearest(p).point) <= distance(p, seeds[seed]);
+    return crossings && crossings->distance_to(p) <= distance(p, seeds[seed]);
   };
   for (const CellIsland& island : cell_islands(pieces))
     if ((everywhere || at_defects.contains(island.centroid)) &&

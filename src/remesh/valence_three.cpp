@@ -34,7 +34,7 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
                                  const SurfaceProjector& surface) {
   const auto gap = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
     const Vec3 centroid = (1.0 / 3) * (a + b + c);
-    return distance(centroid, surface.nearest(centroid).point);
+    return surface.distance_to(centroid);
   };
   std::vector<std::vector<std::size_t>> around(mesh.vertices.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
@@ -76,18 +76,15 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     const Vec3& p = mesh.vertices[v];
     WorstShape fan, merged;
     merged.add(a, b, c);
-    double fan_gap = 0;
-    for (const auto& r : rim) {
-      const Vec3 &x = mesh.vertices[r[0]], &y = mesh.vertices[r[1]];
-      fan.add(p, x, y);
-      fan_gap = std::max(fan_gap, gap(p, x, y));
-    }
+    for (const auto& r : rim) fan.add(p, mesh.vertices[r[0]], mesh.vertices[r[1]]);
     const Vec3 n = normal(a, b, c);
     const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
     const double height = norm(n) > 0 ? std::abs(dot(p - a, n)) / norm(n) : 0;
-    if (height > kFlatness * longest || !(merged.score() > fan.score()) ||
-        gap(a, b, c) > kGapGrowth * fan_gap + kGapFloor * longest)
-      continue;
+    if (height > kFlatness * longest || !(merged.score() > fan.score())) continue;
+    double fan_gap = 0;  // projections last: they cost the most
+    for (const auto& r : rim)
+      fan_gap = std::max(fan_gap, gap(p, mesh.vertices[r[0]], mesh.vertices[r[1]]));
+    if (gap(a, b, c) > kGapGrowth * fan_gap + kGapFloor * longest) continue;
     for (const std::size_t t : around[v]) gone[t] = true;
     added.push_back({abc[0], abc[1], abc[2]});
     present.insert(key);
