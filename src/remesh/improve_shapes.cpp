@@ -14,6 +14,7 @@
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/unit_vector.hpp"
+#include "remesh/surface_gap.hpp"
 #include "remesh/worst_shape.hpp"
 
 namespace cvtmesh {
@@ -39,11 +40,6 @@ const double kTurnCos = std::cos(30 * M_PI / 180);
 
 // Below this Q, a triangle's normal says little about the surface.
 constexpr double kSliver = 0.1;
-// A change may bring its triangles this much farther from the surface, relatively, plus this
-// fraction of the length it moves or flips across (so that chords of a flat region, 0 away, may
-// change at all).
-constexpr double kGapGrowth = 1.1;
-constexpr double kGapFloor = 0.01;
 // A vertex whose angles sum to more than this far from 360° is a tip or a saddle of the
 // surface at the output's scale: moving it would uncover the tip (on bunny.off at 1k vertices,
 // with no such rule, its ear's tip came 0.4% of the diagonal farther from the output). 20°
@@ -305,7 +301,7 @@ class ShapeImprover {
     }
     // The new diagonal stays about as close to the surface as the old one.
     if (gap_at(0.5 * (p[c] + p[d])) >
-        kGapGrowth * gap_at(0.5 * (p[a] + p[b])) + kGapFloor * distance(p[c], p[d]))
+        allowed_gap(gap_at(0.5 * (p[a] + p[b])), distance(p[c], p[d])))
       return false;
     mesh_.triangles[t1] = {c, a, d};
     mesh_.triangles[t2] = {d, b, c};
@@ -444,8 +440,7 @@ class ShapeImprover {
       const Vec3 n = unit_normal(a, b, c);
       if (no_direction(n) || dot(n, normals[k]) < kTurnCos) return false;
     }
-    const double allowed =
-        kGapGrowth * start_gap_[v] + kGapFloor * distance(start_[v], mesh_.vertices[v]);
+    const double allowed = allowed_gap(start_gap_[v], distance(start_[v], mesh_.vertices[v]));
     return gap_around(v) <= allowed && distance_to_star(start_[v], v) <= allowed;
   }
 

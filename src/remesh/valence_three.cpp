@@ -6,6 +6,7 @@
 #include <set>
 
 #include "geometry/surface_projector.hpp"
+#include "remesh/surface_gap.hpp"
 #include "remesh/worst_shape.hpp"
 
 namespace cvtmesh {
@@ -14,15 +15,6 @@ namespace {
 
 // A vertex within this fraction of the new triangle's longest edge of its plane.
 constexpr double kFlatness = 0.2;
-// The new triangle's centroid may be this much farther from the surface than the farthest of the
-// three's, relatively, plus this fraction of its longest edge (so that a flat region, 0 away,
-// allows any change at all): the triangle stays about as close to the surface as the three were.
-// This replaced a bound on how far any of the three's normals turned (45°), which kept the
-// worst triangle of man.off at 5k, a flat one whose normal says little (148° at a vertex added by
-// topology control, 0.14 of the edge off the plane): θmin 15.6° → 20.9° at 5k, 15.0° → 22.8° at
-// 10k; no other output of the 56 shared meshes at 1k, 5k and 10k changed.
-constexpr double kGapGrowth = 1.1;
-constexpr double kGapFloor = 0.01;
 
 Vec3 normal(const Vec3& a, const Vec3& b, const Vec3& c) {
   return cross(b - a, c - a);
@@ -81,10 +73,16 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     const double longest = std::max({distance(a, b), distance(b, c), distance(c, a)});
     const double height = norm(n) > 0 ? std::abs(dot(p - a, n)) / norm(n) : 0;
     if (height > kFlatness * longest || !(merged.score() > fan.score())) continue;
-    double fan_gap = 0;  // projections last: they cost the most
+    // The new triangle stays about as close to the surface as the three were: its centroid's
+    // distance within allowed_gap of the farthest of theirs. This replaced a bound on how far any
+    // of the three's normals turned (45°), which kept the worst triangle of man.off at 5k, a flat
+    // one whose normal says little (148° at a vertex added by topology control, 0.14 of the edge
+    // off the plane): θmin 15.6° → 20.9° at 5k, 15.0° → 22.8° at 10k; no other output of the 56
+    // shared meshes at 1k, 5k and 10k changed. Projections last: they cost the most.
+    double fan_gap = 0;
     for (const auto& r : rim)
       fan_gap = std::max(fan_gap, gap(p, mesh.vertices[r[0]], mesh.vertices[r[1]]));
-    if (gap(a, b, c) > kGapGrowth * fan_gap + kGapFloor * longest) continue;
+    if (gap(a, b, c) > allowed_gap(fan_gap, longest)) continue;
     for (const std::size_t t : around[v]) gone[t] = true;
     added.push_back({abc[0], abc[1], abc[2]});
     present.insert(key);
