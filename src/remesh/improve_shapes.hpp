@@ -4,10 +4,12 @@
 // flips edges between triangles that fold little and moves vertices towards the centre of their
 // star, back onto the input surface, as tangential relaxation does in CGAL's and pmp-library's
 // remeshers, then searches around each vertex still at a bad triangle for a better place (on the
-// surface, or along its feature curve for a vertex that traces one). Neither changes the
-// triangulation's topology (a flip never makes an edge that is there already, a move changes no
-// connectivity), so a manifold stays a manifold with the same Euler characteristic and boundary
-// loops, and a change is kept only when the worst triangle it touches gets better.
+// surface, or along its feature curve for a vertex that traces one). Once that changes nothing,
+// flips that bring valences nearer 6, each with moves around it, mend what neither can alone: a
+// vertex of valence 4 beside ones of 8. Neither flips nor moves change the triangulation's
+// topology (a flip never makes an edge that is there already, a move changes no connectivity), so
+// a manifold stays a manifold with the same Euler characteristic and boundary loops, and a change
+// is kept only when the worst triangle it touches gets better.
 #pragma once
 
 #include <cstddef>
