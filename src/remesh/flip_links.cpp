@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cvtmesh/quality.hpp"
+#include "geometry/triangles_around.hpp"
 
 namespace cvtmesh {
 
@@ -20,10 +21,7 @@ double smallest_angle(const TriangleMesh& m, const Triangle& t) {
 // The triangles at each vertex, kept up to date through the flips.
 class VertexTriangles {
  public:
-  explicit VertexTriangles(const TriangleMesh& m) : of_(m.vertices.size()) {
-    for (Index t = 0; t < m.triangles.size(); ++t)
-      for (Index v : m.triangles[t]) of_[v].push_back(t);
-  }
+  explicit VertexTriangles(const TriangleMesh& m) : of_(triangles_around(m)) {}
   const std::vector<Index>& operator()(Index v) const { return of_[v]; }
   void add(Index v, Index t) { of_[v].push_back(t); }
   void remove(Index v, Index t) { std::erase(of_[v], t); }

@@ -13,6 +13,7 @@
 #include "features/edge_uses.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/triangles_around.hpp"
 #include "geometry/unit_vector.hpp"
 #include "remesh/surface_gap.hpp"
 #include "remesh/worst_shape.hpp"
@@ -101,9 +102,7 @@ class ShapeImprover {
         support_(std::move(support)),
         features_(features),
         start_(mesh.vertices),
-        around_(mesh.vertices.size()) {
-    for (Index t = 0; t < mesh_.triangles.size(); ++t)
-      for (Index v : mesh_.triangles[t]) around_[v].push_back(t);
+        around_(triangles_around(mesh)) {
     for (Index t = 0; t < mesh_.triangles.size(); ++t) {
       const auto [a, b, c] = mesh_.corners(t);
       floor_.add(a, b, c);

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "geometry/surface_projector.hpp"
+#include "geometry/triangles_around.hpp"
 #include "remesh/surface_gap.hpp"
 #include "remesh/worst_shape.hpp"
 
@@ -28,9 +29,7 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     const Vec3 centroid = (1.0 / 3) * (a + b + c);
     return surface.distance_to(centroid);
   };
-  std::vector<std::vector<std::size_t>> around(mesh.vertices.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const Index v : mesh.triangles[t]) around[v].push_back(t);
+  const std::vector<std::vector<Index>> around = triangles_around(mesh);
   std::set<Triangle> present;  // each triangle's vertices, sorted
   for (Triangle t : mesh.triangles) {
     std::sort(t.begin(), t.end());
@@ -83,7 +82,7 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     for (const auto& r : rim)
       fan_gap = std::max(fan_gap, gap(p, mesh.vertices[r[0]], mesh.vertices[r[1]]));
     if (gap(a, b, c) > allowed_gap(fan_gap, longest)) continue;
-    for (const std::size_t t : around[v]) gone[t] = true;
+    for (const Index t : around[v]) gone[t] = true;
     added.push_back({abc[0], abc[1], abc[2]});
     present.insert(key);
     touched[v] = touched[abc[0]] = touched[abc[1]] = touched[abc[2]] = true;
