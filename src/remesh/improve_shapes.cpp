@@ -119,7 +119,7 @@ class ShapeImprover {
   bool sweep(ShapeImprovement& done) {
     bool changed = false;
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
-      if (bad(t) && flip_an_edge(t, &ShapeImprover::try_flip)) {
+      if (bad(t) && flip_an_edge(t, [&](Index a, Index b) { return try_flip(t, a, b); })) {
         ++done.flips;
         changed = true;
       }
@@ -141,8 +141,8 @@ class ShapeImprover {
   }
 
   // Once sweeps change nothing: balancing flips at the badly shaped triangles, worst first, with
-  // the mesh's worst Q and θmin as they are now as the floor that no change may go under.
-  // Returns whether anything changed.
+  // the mesh's worst Q and θmin as they are now as the floor that no change, here or in the
+  // sweeps after, may go under. Returns whether anything changed.
   bool balance(ShapeImprovement& done) {
     floor_ = WorstShape{};
     std::vector<std::pair<double, Index>> worst_first;
@@ -154,7 +154,8 @@ class ShapeImprover {
     std::sort(worst_first.begin(), worst_first.end());
     bool changed = false;
     for (const auto& [score, t] : worst_first)
-      if (bad(t) && flip_an_edge(t, &ShapeImprover::try_balancing_flip)) {
+      if (bad(t) &&
+          flip_an_edge(t, [&](Index a, Index b) { return try_balancing_flip(t, a, b, done); })) {
         ++done.flips;
         changed = true;
       }
@@ -162,11 +163,12 @@ class ShapeImprover {
   }
 
  private:
-  // Tries `try_one` on the edges of triangle t in turn, until one flips.
-  bool flip_an_edge(Index t, bool (ShapeImprover::*try_one)(Index, Index, Index)) {
+  // Tries `try_one(a, b)` on the edges a→b of triangle t in turn, until one flips.
+  template <class TryOne>
+  bool flip_an_edge(Index t, const TryOne& try_one) {
     for (int i = 0; i < 3; ++i) {
       const Triangle f = mesh_.triangles[t];
-      if ((this->*try_one)(t, f[i], f[(i + 1) % 3])) return true;  // t is another triangle now
+      if (try_one(f[i], f[(i + 1) % 3])) return true;  // t is another triangle now
     }
     return false;
   }
@@ -372,7 +374,8 @@ class ShapeImprover {
   // 56 shared meshes at 1k, 5k and 10k vertices, θmin or Qmin rose on 16 runs (3torus at 5k:
   // 26.4° → 33.6°, Qmin 0.459 → 0.627; lion-head at 5k: Qmin 0.613 → 0.659; cow at 1k: 29.7°
   // → 33.2°) and fell on none; the Hausdorff max rose by 0.007% of the diagonal at most.
-  bool try_balancing_flip(Index t1, Index a, Index b) {
+  // The moves kept with it count in `done`.
+  bool try_balancing_flip(Index t1, Index a, Index b, ShapeImprovement& done) {
     const std::optional<Quad> q = flippable(t1, a, b);
     if (!q) return false;
     const Index c = q->c, d = q->d;
@@ -418,13 +421,17 @@ class ShapeImprover {
     std::array<std::vector<Index>, 4> stars;
     for (int k = 0; k < 4; ++k) stars[k] = around_[quad[k]];
     flip(*q);
+    std::size_t moves = 0;
     const auto move = [&](Index v) {
-      if (support_[v].kind != VertexSupport::Kind::fixed) try_move(v);
+      moves += support_[v].kind != VertexSupport::Kind::fixed && try_move(v);
     };
     for (Index v : quad) move(v);
     for (Index v : moved) move(v);
     for (Index v : quad) move(v);
-    if (region_shape().better_than(before, floor_)) return true;
+    if (region_shape().better_than(before, floor_)) {
+      done.moves += moves;
+      return true;
+    }
     for (std::size_t k = 0; k < moved.size(); ++k) mesh_.vertices[moved[k]] = from[k];
     for (int k = 0; k < 4; ++k) around_[quad[k]] = std::move(stars[k]);
     mesh_.triangles[q->t1] = f1;
