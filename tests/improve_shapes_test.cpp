@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <random>
 
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
@@ -71,17 +70,6 @@ TEST(ImproveShapes, NeverFlipsAFeatureEdge) {
   const SurfaceProjector surface(mesh);
   EXPECT_EQ(improve_shapes(mesh, surface, nullptr, {}, {Edge{0, 1}}, 5).flips, 0u);
   EXPECT_EQ(mesh.triangles, flat_pair().triangles);
-}
-
-// `mesh` with each vertex moved at random by up to `amount` along the unit sphere.
-TriangleMesh jittered_on_sphere(TriangleMesh mesh, double amount, std::uint64_t seed) {
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> u(-amount, amount);
-  for (Vec3& v : mesh.vertices) {
-    const Vec3 moved = v + Vec3{u(random), u(random), u(random)};
-    v = (1 / norm(moved)) * moved;
-  }
-  return mesh;
 }
 
 TEST(ImproveShapes, AJitteredSphereGetsBetterWithTheSameTopologyOnTheSurface) {

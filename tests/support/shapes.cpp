@@ -203,4 +203,14 @@ TriangleMesh shuffled(const TriangleMesh& mesh, std::uint64_t seed, std::vector<
   return out;
 }
 
+TriangleMesh jittered_on_sphere(TriangleMesh mesh, double amount, std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (Vec3& v : mesh.vertices) {
+    const Vec3 moved = v + Vec3{u(random), u(random), u(random)};
+    v = (1 / norm(moved)) * moved;
+  }
+  return mesh;
+}
+
 }  // namespace cvtmesh::testing

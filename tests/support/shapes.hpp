@@ -39,6 +39,10 @@ TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b);
 // `mesh` with every vertex moved by `offset` and scaled by `scale` about the origin first.
 TriangleMesh transformed(TriangleMesh mesh, double scale, const Vec3& offset = {});
 
+// `mesh` with each vertex moved at random by up to `amount` in each coordinate, then put back on
+// the unit sphere (along the ray from the origin); the same `seed`, the same moves.
+TriangleMesh jittered_on_sphere(TriangleMesh mesh, double amount, std::uint64_t seed);
+
 // The same surface with its vertex ids and its triangles in a random order (fixed by `seed`);
 // `new_id[v]`, if given, receives each vertex's new id.
 TriangleMesh shuffled(const TriangleMesh& mesh, std::uint64_t seed,
