@@ -153,12 +153,14 @@ class ShapeImprover {
     }
     std::sort(worst_first.begin(), worst_first.end());
     bool changed = false;
-    for (const auto& [score, t] : worst_first)
-      if (bad(t) &&
-          flip_an_edge(t, [&](Index a, Index b) { return try_balancing_flip(t, a, b, done); })) {
+    for (const auto& worst : worst_first) {
+      const Index t = worst.second;
+      const auto balancing = [&](Index a, Index b) { return try_balancing_flip(t, a, b, done); };
+      if (bad(t) && flip_an_edge(t, balancing)) {
         ++done.flips;
         changed = true;
       }
+    }
     return changed;
   }
 
