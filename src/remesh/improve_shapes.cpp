@@ -375,9 +375,9 @@ class ShapeImprover {
   // neighbours. Kept when the worst triangle at the vertices moved is better; else undone. On the
   // 56 shared meshes at 1k, 5k and 10k vertices, θmin or Qmin rose on 26 runs (3torus at 5k:
   // 26.4° → 33.6°, Qmin 0.459 → 0.627; lion-head at 5k: Qmin 0.613 → 0.659; cow at 1k: 29.7°
-  // → 33.2°) and fell on one (bull at 1k: Qmin 0.700 → 0.644 at the same θmin, 37.3°, where a
-  // vertex of three triangles that the valence-three removal took before now stays, with a
-  // fourth); the Hausdorff max rose by 0.007% of the diagonal at most.
+  // → 33.2°) and fell on one (bull at 1k: Qmin 0.700 → 0.644 at the same θmin, 37.3°: the
+  // valence-three removal that followed took a vertex away before, and finds none now); the
+  // Hausdorff max rose by 0.007% of the diagonal at most.
   // The moves kept with it count in `done`.
   bool try_balancing_flip(Index t1, Index a, Index b, ShapeImprovement& done) {
     const std::optional<Quad> q = flippable(t1, a, b);
