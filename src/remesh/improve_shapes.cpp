@@ -249,7 +249,7 @@ class ShapeImprover {
         // One feature edge when the link to its other neighbour along the curve was not traced:
         // it may still slide, and the edge it has stays a chord of the curve.
         if (along.empty() || along.size() > 2 || curves_ == nullptr) return false;
-        const Star shape = star(v, ends);
+        const Star kind = star(v, ends);
         std::sort(ends.begin(), ends.end());
         return shape == Star::disc || (shape == Star::half_disc && std::ranges::equal(ends, along));
       }
@@ -389,9 +389,9 @@ class ShapeImprover {
     double off_before = 0, off_after = 0;
     for (int k = 0; k < 4; ++k) {
       const Index v = quad[k];
-      const Star shape = star(v, ends);
-      if (shape == Star::other) return false;
-      const double ideal = shape == Star::disc ? 6 : 3;
+      const Star kind = star(v, ends);
+      if (kind == Star::other) return false;
+      const double ideal = kind == Star::disc ? 6 : 3;
       const double valence = static_cast<double>(around_[v].size());
       off_before += (valence - ideal) * (valence - ideal);
       const double flipped = valence + (k < 2 ? -1 : 1);
