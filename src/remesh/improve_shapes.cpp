@@ -251,7 +251,7 @@ class ShapeImprover {
         if (along.empty() || along.size() > 2 || curves_ == nullptr) return false;
         const Star kind = star(v, ends);
         std::sort(ends.begin(), ends.end());
-        return shape == Star::disc || (shape == Star::half_disc && std::ranges::equal(ends, along));
+        return kind == Star::disc || (kind == Star::half_disc && std::ranges::equal(ends, along));
       }
     }
     return false;
