@@ -102,11 +102,8 @@ class ShapeImprover {
         support_(std::move(support)),
         features_(features),
         start_(mesh.vertices),
+        floor_(mesh_shape()),
         around_(triangles_around(mesh)) {
-    for (Index t = 0; t < mesh_.triangles.size(); ++t) {
-      const auto [a, b, c] = mesh_.corners(t);
-      floor_.add(a, b, c);
-    }
     support_.resize(mesh_.vertices.size());
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
       if (!may_move(v)) support_[v].kind = VertexSupport::Kind::fixed;
@@ -144,13 +141,10 @@ class ShapeImprover {
   // the mesh's worst Q and θmin as they are now as the floor that no change, here or in the
   // sweeps after, may go under. Returns whether anything changed.
   bool balance(ShapeImprovement& done) {
-    floor_ = WorstShape{};
+    floor_ = mesh_shape();
     std::vector<std::pair<double, Index>> worst_first;
-    for (Index t = 0; t < mesh_.triangles.size(); ++t) {
-      const auto [a, b, c] = mesh_.corners(t);
-      floor_.add(a, b, c);
-      if (bad(t)) worst_first.push_back({shape(t).score(), t});
-    }
+    for (Index t = 0; t < mesh_.triangles.size(); ++t)
+      if (bad(t)) worst_first.push_back({worst_of(std::array{t}).score(), t});
     std::sort(worst_first.begin(), worst_first.end());
     bool changed = false;
     for (const auto& worst : worst_first) {
@@ -175,12 +169,22 @@ class ShapeImprover {
     return false;
   }
 
-  WorstShape shape(Index t) const {
-    WorstShape s;
-    const auto [a, b, c] = mesh_.corners(t);
-    s.add(a, b, c);
-    return s;
+  // The worst shape of the triangles `ts`; of the whole mesh; of the triangles at `v`.
+  template <class Triangles>
+  WorstShape worst_of(const Triangles& ts) const {
+    WorstShape worst;
+    for (Index t : ts) {
+      const auto [a, b, c] = mesh_.corners(t);
+      worst.add(a, b, c);
+    }
+    return worst;
   }
+  WorstShape mesh_shape() const {
+    WorstShape worst;
+    for (Index t = 0; t < mesh_.triangles.size(); ++t) worst.add(worst_of(std::array{t}));
+    return worst;
+  }
+  WorstShape star_shape(Index v) const { return worst_of(around_[v]); }
 
   bool bad(Index t) const {
     const auto [a, b, c] = mesh_.corners(t);
@@ -407,15 +411,8 @@ class ShapeImprover {
     std::sort(moved.begin(), moved.end());
     moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
     const auto region_shape = [&] {
-      std::vector<Index> ts;
-      for (Index v : moved) ts.insert(ts.end(), around_[v].begin(), around_[v].end());
-      std::sort(ts.begin(), ts.end());
-      ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
       WorstShape worst;
-      for (Index t : ts) {
-        const auto [x, y, z] = mesh_.corners(t);
-        worst.add(x, y, z);
-      }
+      for (Index v : moved) worst.add(star_shape(v));
       return worst;
     };
     const WorstShape before = region_shape();
@@ -542,16 +539,6 @@ class ShapeImprover {
     return at;
   }
 
-  // The worst shapes of the triangles at `v`.
-  WorstShape star_shape(Index v) const {
-    WorstShape worst;
-    for (Index t : around_[v]) {
-      const auto [a, b, c] = mesh_.corners(t);
-      worst.add(a, b, c);
-    }
-    return worst;
-  }
-
   double mean_edge_length(Index v) const {
     double sum = 0;
     for (Index t : around_[v]) {
@@ -580,9 +567,9 @@ class ShapeImprover {
   const CurveProjector* curves_;
   std::vector<VertexSupport> support_;
   const std::vector<Edge>& features_;
-  const std::vector<Vec3> start_;           // the vertices where they were
-  std::vector<double> start_gap_;           // per vertex, gap_around it then
-  WorstShape floor_;                        // the mesh's worst Q and θmin at the start
+  const std::vector<Vec3> start_;  // the vertices where they were
+  std::vector<double> start_gap_;  // per vertex, gap_around it then
+  WorstShape floor_;  // the mesh's worst Q and θmin at the start, then where balance() began
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
 };
 

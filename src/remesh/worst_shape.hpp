@@ -18,6 +18,10 @@ struct WorstShape {
     quality = std::min(quality, s.quality);
     angle = std::min(angle, s.min_angle / 60);
   }
+  void add(const WorstShape& o) {
+    quality = std::min(quality, o.quality);
+    angle = std::min(angle, o.angle);
+  }
   double score() const { return std::min(quality, angle); }
   // Whether this (the triangles a change makes) is better than `o` (those it replaces): a
   // better score, and neither Q nor θmin under both o's and the mesh's worst at the start
