@@ -273,7 +273,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   // man.off from 665 seeds added to 84). Searched only for an output without the input's
   // topology: searched for every run, it added about 0.3 s to igea's 2.2 s at 10k.
   std::unique_ptr<SurfaceProjector> crossings;
-  bool crossings_found = false;
+  bool crossings_searched = false;
   int last_round = rounds;
   for (int round = 0;; ++round) {
     Assessment a = assess(m, special, output.mesh, seeds, constraints);
@@ -304,9 +304,9 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       DefectSeeds found;
       if (!a.topology_kept) {
         const OutputDefects& defects = a.defects;
-        if (!crossings_found) {
+        if (!crossings_searched) {
           crossings = crossing_surface(m.surface);
-          crossings_found = true;
+          crossings_searched = true;
         }
         std::vector<Triangle> dual;  // the defects' triangles, in seeds
         for (Triangle t : defects.triangles) {
