@@ -9,6 +9,7 @@
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
@@ -159,6 +160,32 @@ TEST(Adaptive, ThinWaistKeepsTopologyWhereUniformDoesNot) {
   EXPECT_FALSE(same_topology(analyze_topology(uniform.mesh), input));
   EXPECT_TRUE(same_topology(analyze_topology(adaptive.mesh), input));
   EXPECT_EQ(adaptive.triangles_removed, 0u);
+}
+
+TEST(Adaptive, ANarrowStripBetweenFeaturesGetsEdgesAsLongAsItIsWide) {
+  // A flat sheet: the square [0,4]² with a tab [4,8] × [0,0.1]. Flat, it has no poles; only the
+  // gap between the tab's sides (issue 20 item 1) makes its edges short: about its width,
+  // against about 0.2 on the square.
+  const TriangleMesh sheet = mapped_grid(160, 40, [](double u, double v) {
+    const double x = 8 * u;
+    return Vec3{x, v * (x <= 4 ? 4 : 0.1), 0};
+  });
+  RemeshSettings s;
+  s.vertices = 500;
+  s.sizing.adaptive = 1.5;
+  s.hausdorff.reset();
+  const RemeshResult r = remesh(sheet, s);
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(sheet)));
+  std::vector<double> tab, square;
+  for (const Edge& e : sorted_edges(r.mesh)) {
+    const Vec3 &a = r.mesh.vertices[e[0]], &b = r.mesh.vertices[e[1]];
+    const double middle = (a.x + b.x) / 2;
+    if (middle > 5) tab.push_back(distance(a, b));
+    if (middle < 3) square.push_back(distance(a, b));
+  }
+  EXPECT_NEAR(median(tab), 0.1, 0.03);
+  EXPECT_GT(median(square), 0.15);
+  EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 25);
 }
 
 TEST(Adaptive, GradationBoundsNeighbouringTargetLengths) {

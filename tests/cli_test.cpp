@@ -289,6 +289,23 @@ TEST(CliLfs, WritesTheSizesAsAPlyVertexPropertyAndRefusesOtherFormats) {
   EXPECT_NE(off.err.find("use .ply"), std::string::npos) << off.err;
 }
 
+TEST(CliLfs, NarrowsToTheGapsBetweenBoundariesAndFeatures) {
+  // A flat strip 6 × 1 has no poles (its lfs is its diagonal) but its sides are 1 apart.
+  TempDir dir;
+  write_mesh(dir / "strip.off", mapped_grid(60, 6, [](double u, double v) {
+               return Vec3{6 * u, v, 0};
+             }));
+  for (const std::string options : {"", "--no-features ", "--vertices 200 "}) {
+    const CliRun r = run_cli(dir, "lfs --json --gradation 0 " + options +
+                                      quoted(dir / "strip.off") + " " + quoted(dir / "sizes.ply"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_NEAR(j["lfs_min"].get<double>(), 1.0, 1e-9) << options;
+    EXPECT_GT(j["lfs_max"].get<double>(), 1.5) << options;
+    EXPECT_EQ(j["feature_curves"], 4) << options;  // the outline, split at its corners
+  }
+}
+
 TEST(CliRvd, JsonReportTilesTheSurface) {
   TempDir dir;
   write_mesh(dir / "torus.off", torus(1, 0.4, 48, 24));

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
@@ -24,12 +25,26 @@ struct LfsSettings {
   // function under the raw estimate. Higher: smoother size changes (and smaller sizes near
   // thin parts' surroundings). 0: no grading, the raw estimate.
   double gradation = 1.5;
+  // The mesh's sharp features and boundaries (detect_features), or null: near them, the size
+  // falls to the gap to another part of them (capped_by_feature_gaps) before the grading.
+  const Features* features = nullptr;
 };
 
 // The local feature size at each vertex of `mesh` (the distance to the medial axis, estimated as
 // the distance to the nearest pole of the samples), in the mesh's units; 0 for a vertex used by
 // no triangle. Throws InvalidArgument for a mesh without area or a negative gradation.
 std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettings& settings = {});
+
+// `sizes` (per vertex of `mesh`), each curve vertex's lowered to the narrowest gap across which
+// another part of the feature curves faces it (issue 20 item 1): the distance to the nearest
+// point of them whose chord makes at least 60° with both curves there, where the gap goes on (a
+// gap further along the curve, it faces them within twice the gap). A strip between two creases
+// or boundaries gets its width, a closed curve its own width, the sides of a wedge under 60°
+// their distance; two curves meeting at a wider angle never narrow each other, nor do curves
+// that pass each other at one spot only. Only gaps under a vertex's size are looked for: the
+// size bounds the search.
+std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Features& features,
+                                           std::vector<double> sizes);
 
 // Target edge lengths for remeshing (RemeshSettings::sizing): one of three sources, then one
 // scale factor for the output size, then the grading (adaptive only), then the clamps. The

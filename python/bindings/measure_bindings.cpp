@@ -94,13 +94,19 @@ py::dict features(const py::object& V, const py::object& F, double angle, double
 }
 
 py::array_t<double> lfs(const py::object& V, const py::object& F, double gradation,
-                        std::size_t samples, std::uint64_t seed, int threads) {
+                        std::size_t samples, std::uint64_t seed, bool sharp, double scale,
+                        int threads) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
   std::vector<double> sizes;
   {
     py::gil_scoped_release released;
     const auto limit = thread_limit(threads);
-    sizes = local_feature_size(mesh, {.samples = samples, .seed = seed, .gradation = gradation});
+    FeatureSettings detection;
+    detection.sharp_edges = sharp;
+    detection.scale = scale;
+    const Features features = detect_features(mesh, detection);
+    sizes = local_feature_size(
+        mesh, {.samples = samples, .seed = seed, .gradation = gradation, .features = &features});
   }
   return to_numpy(std::move(sizes));
 }
@@ -201,11 +207,14 @@ a vertex, which bounds any faithful output's smallest angle; 360 when none).)");
   const LfsSettings lfs_defaults;
   m.def("lfs", &lfs, py::arg("V"), py::arg("F"), py::kw_only(),
         py::arg("gradation") = lfs_defaults.gradation, py::arg("samples") = lfs_defaults.samples,
-        py::arg("seed") = lfs_defaults.seed, py::arg("threads") = 0,
+        py::arg("seed") = lfs_defaults.seed, py::arg("features") = true, py::arg("scale") = 0.0,
+        py::arg("threads") = 0,
         R"(Local feature size at each vertex (paper section 4.1): `cvtmesh lfs`.
 
 The distance to the nearest pole (Amenta-Bern) of the vertices' 3D Delaunay triangulation,
-in the mesh's units (0 for a vertex used by no triangle), as an (n,) float64 array.
+in the mesh's units (0 for a vertex used by no triangle), as an (n,) float64 array. Near
+sharp features and boundaries, no more than the gap across which another part of them faces
+the vertex (a strip's width, a small hole's).
 
 gradation : float, default 1.5
     The sizes change by at most 1/gradation per unit length along edges; 0: raw estimate.
@@ -213,7 +222,11 @@ samples : int, default 0
     Area samples added to the vertices, for a coarse mesh whose vertices are too sparse for
     its thin parts (they make every edge of the polyhedron a feature).
 seed : int, default 1
-    Of those samples.)");
+    Of those samples.
+features : bool, default True
+    Sharp edges narrow the sizes too (boundaries always do), as `features()` finds them.
+scale : float, default 0
+    The scale of that detection (the target edge length of a remesh; 0: every curve).)");
   m.def("rvd", &rvd, py::arg("V"), py::arg("F"), py::arg("seeds"), py::kw_only(),
         py::arg("rdt") = false, py::arg("threads") = 0,
         R"(The exact restricted Voronoi diagram of seeds on a surface: `cvtmesh rvd`.

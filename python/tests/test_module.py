@@ -291,6 +291,19 @@ class MeasureTest(unittest.TestCase):
         self.assertEqual(cli["lfs_min"], graded.min())
         self.assertEqual(cli["lfs_max"], graded.max())
 
+    def test_lfs_narrows_to_the_gap_between_boundaries(self):
+        # A flat strip 6 x 1: no poles (its lfs is its diagonal) but its sides are 1 apart.
+        u, v = np.meshgrid(np.linspace(0, 6, 61), np.linspace(0, 1, 7))
+        V = np.column_stack([u.ravel(), v.ravel(), np.zeros(u.size)])
+        idx = np.arange(u.size).reshape(u.shape)
+        a, b, c, d = idx[:-1, :-1], idx[:-1, 1:], idx[1:, 1:], idx[1:, :-1]
+        F = np.concatenate([np.stack([a, b, c], -1).reshape(-1, 3),
+                            np.stack([a, c, d], -1).reshape(-1, 3)])
+        for sharp in (True, False):
+            sizes = cvtmesh.lfs(V, F, gradation=0, features=sharp)
+            self.assertAlmostEqual(sizes.min(), 1.0, places=9)
+            self.assertGreater(sizes.max(), 6.0)
+
     def test_rvd_cells_tile_the_surface(self):
         V, F = torus()
         rng = np.random.default_rng(1)

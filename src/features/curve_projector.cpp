@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/unit_vector.hpp"
+
 namespace cvtmesh {
 
 CurveProjector::CurveProjector(const TriangleMesh& mesh, const Features& features) {
@@ -44,18 +46,29 @@ CurveProjector::Foot CurveProjector::nearest(std::size_t c, const Vec3& p) const
   return best;
 }
 
-Vec3 CurveProjector::at(std::size_t c, double s) const {
+std::size_t CurveProjector::segment_at(std::size_t c, double& s) const {
   const Polyline& line = curves_[c];
   const double total = line.arclength.back();
   if (line.closed) s = std::fmod(std::fmod(s, total) + total, total);
   s = std::clamp(s, 0.0, total);
-  const std::size_t k = std::min<std::size_t>(
+  return std::min<std::size_t>(
       static_cast<std::size_t>(std::upper_bound(line.arclength.begin(), line.arclength.end(), s) -
                                line.arclength.begin()),
       line.points.size() - 1);
+}
+
+Vec3 CurveProjector::at(std::size_t c, double s) const {
+  const Polyline& line = curves_[c];
+  const std::size_t k = segment_at(c, s);
   const double s0 = line.arclength[k - 1], s1 = line.arclength[k];
   const double t = s1 > s0 ? (s - s0) / (s1 - s0) : 0;
   return line.points[k - 1] + t * (line.points[k] - line.points[k - 1]);
+}
+
+Vec3 CurveProjector::direction(std::size_t c, double s) const {
+  const Polyline& line = curves_[c];
+  const std::size_t k = segment_at(c, s);
+  return unit_or_zero(line.points[k] - line.points[k - 1]);
 }
 
 }  // namespace cvtmesh

@@ -23,6 +23,8 @@ class CurveProjector {
   Foot nearest(std::size_t c, const Vec3& p) const;
   // The point at arc length s along curve c (taken modulo the length on a closed curve).
   Vec3 at(std::size_t c, double s) const;
+  // The unit direction of curve c at arc length s (of the segment there).
+  Vec3 direction(std::size_t c, double s) const;
   double length(std::size_t c) const { return curves_[c].arclength.back(); }
   // The arc length at each vertex of curve c's polyline (a closed curve's first one again last).
   const std::vector<double>& arclengths(std::size_t c) const { return curves_[c].arclength; }
@@ -35,6 +37,10 @@ class CurveProjector {
     std::vector<double> arclength;
     bool closed;
   };
+  // The index k of the segment (points k-1, k) of curve c at arc length s, after taking s
+  // modulo a closed curve's length and into range.
+  std::size_t segment_at(std::size_t c, double& s) const;
+
   std::vector<Polyline> curves_;
 };
 

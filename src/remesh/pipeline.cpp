@@ -122,7 +122,25 @@ std::vector<Vec3> random_seeds(const TriangleMesh& mesh, std::size_t count, std:
   return points;
 }
 
+// Detects the features at `scale` (unless FeatureSettings::scale is set): in the caller's ids
+// into result.features, in the ids of the sorted mesh (`new_id`) into `features`.
+void detect_features_at(const TriangleMesh& input, const std::vector<Index>& new_id,
+                        const RemeshSettings& settings, double scale, RemeshResult& result,
+                        Features& features) {
+  FeatureSettings feature_settings = settings.features;
+  if (feature_settings.scale == 0) feature_settings.scale = scale;
+  result.features = detect_features(input, feature_settings);
+  features = renumbered(result.features, new_id);
+}
+
 }  // namespace
+
+double scale_before_sizing(const TriangleMesh& mesh, const RemeshSettings& s) {
+  if (s.features.scale > 0) return s.features.scale;
+  const std::size_t n = s.vertices > 0 ? s.vertices : s.initial_seeds.size();
+  if (n > 0) return edge_length_for(surface_area(mesh), n);
+  return s.edge_length != 0 ? s.edge_length : s.edge_length_rel * bounding_box(mesh).diagonal();
+}
 
 double edge_length_for(double area, std::size_t n) {
   return std::sqrt(area / (std::sqrt(3.0) / 2 * static_cast<double>(n)));
@@ -180,8 +198,15 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   const TriangleMesh& mesh = sorted.mesh;
   RemeshResult result;
   Features features;  // result.features, in the ids of `mesh`
+  // An adaptive sizing narrows to the gaps between features (issue 20 item 1), so it needs them
+  // first, detected at the scale its output size gives before the sizes are known.
+  const bool adaptive = settings.sizing.adaptive > 0;
+  if (adaptive)
+    detect_features_at(input, sorted.new_id, settings, scale_before_sizing(mesh, settings), result,
+                       features);
   // Target lengths that vary (issue 20) enter the CVT as its density ρ (eq. 1).
-  const std::optional<SizeField> sizes = make_size_field(mesh, sorted.new_id, settings);
+  const std::optional<SizeField> sizes =
+      make_size_field(mesh, sorted.new_id, settings, adaptive ? &features : nullptr);
   const SizeField* field = sizes ? &*sizes : nullptr;
   const std::size_t count = settings.initial_seeds.empty()
                                 ? unit_vertex_count(mesh, settings, field)
@@ -202,10 +227,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   tbb::task_group ccvt_setup;
   ccvt_setup.run([&] {
     projector.emplace(mesh);
-    FeatureSettings feature_settings = settings.features;
-    if (feature_settings.scale == 0) feature_settings.scale = spacing;
-    result.features = detect_features(input, feature_settings);
-    features = renumbered(result.features, sorted.new_id);
+    if (!adaptive) detect_features_at(input, sorted.new_id, settings, spacing, result, features);
     curves.emplace(mesh, features);
     curve_spacing.emplace(sizes ? CurveSpacing(spacing, *curves, features, *sizes)
                                 : CurveSpacing(spacing));

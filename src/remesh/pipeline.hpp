@@ -19,6 +19,11 @@ double edge_length_for(double area, std::size_t n);
 // initial seeds (their count is the size) or target lengths given as they are.
 void check_output_size(const RemeshSettings& s);
 
+// The scale at which an adaptive sizing detects the features whose gaps narrow it (issue 20
+// item 1), before the sizes and so the count are known: FeatureSettings::scale if set, else the
+// even spacing of the count asked for, else the edge length asked for.
+double scale_before_sizing(const TriangleMesh& mesh, const RemeshSettings& s);
+
 // requested_vertex_count for a mesh of about unit size (see size_exponent in cvtmesh/mesh.hpp),
 // with the size field of its sizing, if any.
 std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s,

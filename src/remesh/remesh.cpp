@@ -42,7 +42,14 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
   if (s.sizing.active() && s.vertices == 0) {
     std::vector<Index> same(mesh.vertices.size());
     std::iota(same.begin(), same.end(), Index{0});
-    field = make_size_field(mesh, same, s);
+    // As remesh_unit makes it: an adaptive sizing narrows at the gaps between features.
+    std::optional<Features> features;
+    if (s.sizing.adaptive > 0) {
+      FeatureSettings at_scale = s.features;
+      at_scale.scale = scale_before_sizing(mesh, s);
+      features = detect_features(mesh, at_scale);
+    }
+    field = make_size_field(mesh, same, s, features ? &*features : nullptr);
   }
   return unit_vertex_count(mesh, s, field ? &*field : nullptr);
 }

@@ -60,6 +60,7 @@ std::vector<double> local_feature_size(const TriangleMesh& given, const LfsSetti
       lfs[v] = std::min(cap, distance(mesh.vertices[v], poles[tree(mesh.vertices[v])]));
     });
   }
+  if (settings.features) lfs = capped_by_feature_gaps(mesh, *settings.features, std::move(lfs));
   if (settings.gradation > 0) lfs = graded(mesh, std::move(lfs), settings.gradation);
 
   const std::vector<bool> used = used_vertices(mesh);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "cvtmesh/errors.hpp"
@@ -36,9 +37,18 @@ double area_median(const TriangleMesh& mesh, const std::vector<double>& h) {
   return order.empty() ? 1.0 : h[order.back()];
 }
 
-// The raw target lengths, per vertex of `mesh`, from the one source the settings give.
-std::vector<double> raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
-                              const RemeshSettings& settings) {
+// The raw target lengths, per vertex of `mesh`, from the one source the settings give; for an
+// adaptive sizing, also the narrowest lengths its features allow.
+struct RawSizes {
+  std::vector<double> h;
+  // Adaptive with features: per vertex, the feature gap (capped_by_feature_gaps) in mesh units,
+  // infinite where none is narrower than the lengths; `floor`: the smallest raw length.
+  std::vector<double> gap;
+  double floor = 0;
+};
+
+RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
+                   const RemeshSettings& settings) {
   const SizingSettings& s = settings.sizing;
   const int sources = (s.adaptive > 0) + !s.edge_lengths.empty() + (s.edge_length_at != nullptr);
   if (sources != 1)
@@ -54,7 +64,7 @@ std::vector<double> raw_sizes(const TriangleMesh& mesh, const std::vector<Index>
     for (double& x : lfs)
       if (x > 0)
         x = std::sqrt(std::clamp(x, median / s.adaptive_range, median * s.adaptive_range) * median);
-    return lfs;
+    return {std::move(lfs), {}, median / std::sqrt(s.adaptive_range)};
   }
   std::vector<double> h(mesh.vertices.size(), 0);
   if (!s.edge_lengths.empty()) {
@@ -72,19 +82,39 @@ std::vector<double> raw_sizes(const TriangleMesh& mesh, const std::vector<Index>
       throw InvalidArgument("the target edge length at vertex " + std::to_string(v) + " is " +
                             std::to_string(length) + "; it must be positive and finite");
   }
-  return h;
+  return {std::move(h), {}, 0};
 }
 
-// The lengths h·k, graded (for an adaptive sizing), then clamped; vertices in no triangle get 1
-// (they carry no area). Graded after the scaling, so that neighbouring output edges differ by
-// the gradation's bound whatever the count; the clamps keep that bound.
-std::vector<double> scaled_sizes(const TriangleMesh& mesh, const std::vector<double>& h,
+// An adaptive sizing's feature gaps (raw.gap), looked for under a few times the lengths scaled
+// by k: the count's factor moves little from its first estimate, and a wider gap is no narrow
+// place.
+void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
+                      const SizingSettings& s, RawSizes& raw) {
+  constexpr double kGapReach = 3;
+  if (!(s.adaptive > 0) || !features || features->curves.empty()) return;
+  std::vector<double> limit(raw.h.size());
+  for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = kGapReach * raw.h[v] * k;
+  const std::vector<double> capped = capped_by_feature_gaps(mesh, *features, limit);
+  raw.gap.assign(limit.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t v = 0; v < limit.size(); ++v)
+    if (capped[v] < limit[v]) raw.gap[v] = capped[v];
+}
+
+// The lengths h·k, capped at the feature gaps (no lower than the raw floor, scaled), graded (for
+// an adaptive sizing), then clamped; vertices in no triangle get 1 (they carry no area). Graded
+// after the scaling, so that neighbouring output edges differ by the gradation's bound whatever
+// the count; the clamps keep that bound. A gap's cap is a length, not scaled: a strip between
+// two creases wants edges about as long as it is wide, whatever the count elsewhere.
+std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
                                  const std::vector<bool>& used, double k, const SizingSettings& s) {
-  std::vector<double> out(h.size(), 1.0);
-  for (std::size_t v = 0; v < h.size(); ++v)
-    if (used[v]) out[v] = h[v] * k;
+  std::vector<double> out(raw.h.size(), 1.0);
+  for (std::size_t v = 0; v < raw.h.size(); ++v)
+    if (used[v]) out[v] = raw.h[v] * k;
+  if (!raw.gap.empty())
+    for (std::size_t v = 0; v < raw.h.size(); ++v)
+      if (used[v]) out[v] = std::min(out[v], std::max(raw.gap[v], raw.floor * k));
   if (s.adaptive > 0) out = graded(mesh, std::move(out), s.adaptive);
-  for (std::size_t v = 0; v < h.size(); ++v) {
+  for (std::size_t v = 0; v < raw.h.size(); ++v) {
     if (!used[v]) continue;
     if (s.min_edge_length > 0) out[v] = std::max(out[v], s.min_edge_length);
     if (s.max_edge_length > 0) out[v] = std::min(out[v], s.max_edge_length);
@@ -144,7 +174,7 @@ std::vector<double> SizeField::steps_along(const std::vector<Index>& polyline) c
 }
 
 std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
-                                         const RemeshSettings& settings) {
+                                         const RemeshSettings& settings, const Features* features) {
   const SizingSettings& s = settings.sizing;
   if (!s.active()) return std::nullopt;
   const double min = s.min_edge_length, max = s.max_edge_length;
@@ -152,7 +182,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     throw InvalidArgument("the edge length clamps must be finite and not negative");
   if (min > 0 && max > 0 && min > max)
     throw InvalidArgument("the minimum edge length is above the maximum");
-  const std::vector<double> h = raw_sizes(mesh, new_id, settings);
+  RawSizes h = raw_sizes(mesh, new_id, settings);
   const std::vector<bool> used = used_vertices(mesh);
   // Initial seeds set the count as `vertices` does.
   const std::size_t vertices =
@@ -168,6 +198,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     };
     const auto n = static_cast<double>(vertices);
     double k = std::sqrt(count(1.0) / n);
+    add_feature_gaps(mesh, features, k, s, h);
     for (int step = 0; step < 12; ++step) {
       // The field of the k that reaches the count is returned as it is: not graded again.
       SizeField field(mesh, scaled_sizes(mesh, h, used, k, s));
@@ -190,7 +221,8 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     throw InvalidArgument("adaptive sizing needs a vertex count or an edge length");
   if (length != 0 && !(length > 0 && std::isfinite(length)))
     throw InvalidArgument("the edge length must be positive");
-  const double k = length > 0 ? length / area_median(mesh, h) : 1.0;
+  const double k = length > 0 ? length / area_median(mesh, h.h) : 1.0;
+  add_feature_gaps(mesh, features, k, s, h);
   return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
 }
 

@@ -36,9 +36,11 @@ class SizeField {
 // The size field the settings ask for on `mesh` (the remesher's copy: spatially sorted by
 // `new_id`, scaled to about unit size, with the settings scaled alike), scaled so that the
 // output size comes out as `settings` asks (see RemeshSettings); unset when the sizing is not
-// active. Throws InvalidArgument for bad sizes or clamps, and for an adaptive sizing without
-// an output size.
+// active. An adaptive sizing given `features` (ids of `mesh`) also narrows to their gaps
+// (capped_by_feature_gaps). Throws InvalidArgument for bad sizes or clamps, and for an adaptive
+// sizing without an output size.
 std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
-                                         const RemeshSettings& settings);
+                                         const RemeshSettings& settings,
+                                         const Features* features = nullptr);
 
 }  // namespace cvtmesh

@@ -127,6 +127,18 @@ TriangleMesh disk(int rings, int sectors) {
   return m;
 }
 
+TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double)>& at) {
+  TriangleMesh m;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      m.vertices.push_back(at(static_cast<double>(i) / nx, static_cast<double>(j) / ny));
+  const auto id = [&](int i, int j) { return static_cast<Index>(j * (nx + 1) + i); };
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
 TriangleMesh hemisphere(int rings, int sectors) {
   TriangleMesh m;
   m.vertices.push_back({0, 0, 1});

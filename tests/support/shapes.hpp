@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
@@ -29,6 +30,10 @@ TriangleMesh hemisphere(int rings, int sectors);
 // Closed cylinder of radius 1 around z, from z = -1 to 1: side grid of `rings` × `sectors`
 // quads, each cap a fan around its centre; genus 0, sharp 90° rims.
 TriangleMesh cylinder(int rings, int sectors);
+
+// An nx × ny grid of quads over the unit square (u, v), each split in two, its vertices placed
+// by `at`: a flat sheet, a strip, a wedge.
+TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double)>& at);
 
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);

@@ -1,0 +1,164 @@
+// The local feature size near sharp features and boundaries (issue 20 item 1): the width of the
+// gap across which another part of the feature curves faces a curve vertex. The poles see a
+// smooth surface's medial axis; a strip between two creases, a slot between two boundary
+// stretches or a small hole is as narrow as its curves are close, however flat it is.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "cvtmesh/sizing.hpp"
+#include "features/curve_projector.hpp"
+#include "geometry/point_tree.hpp"
+#include "geometry/unit_vector.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// Two stretches face each other across a gap when the chord between them makes at least 60°
+// with both curves. Two curves meeting at a corner at an angle α only face each other near it
+// when α < 60°: a right-angled corner is no narrow place, a 20° wedge is, and so is a closed
+// curve, across its width.
+constexpr double kFacingCos = 0.5;
+// A gap is a narrow place where it goes on along the curve: a gap further along it, the curve
+// faces another part within twice the gap (a strip, a slot, a wedge, a small hole). A zigzag
+// of a jagged rim faces itself at one corner only, across an edge the output traces as it is.
+constexpr double kGoesOn = 2;
+// Curve points sampled this finely (as a fraction of the median size) find the stretches near
+// a point; the distance itself is to the stretch, exactly.
+constexpr double kSamplesPerSize = 8;
+constexpr double kMaxSamples = 2e6;
+
+// The nearest point of the curves that faces a point of them, by the segments near it.
+class GapFinder {
+ public:
+  GapFinder(const TriangleMesh& mesh, const Features& features, double step) : step_(step) {
+    for (const FeatureCurve& curve : features.curves) {
+      const std::size_t n = curve.vertices.size();
+      for (std::size_t k = 0; k + 1 < n + (curve.closed ? 1 : 0); ++k) {
+        const Vec3 a = mesh.vertices[curve.vertices[k]],
+                   b = mesh.vertices[curve.vertices[(k + 1) % n]];
+        const auto m = static_cast<std::size_t>(std::max(1.0, std::ceil(distance(a, b) / step)));
+        for (std::size_t i = 0; i < m; ++i) {  // each point of the segment within step/2 of one
+          samples_.push_back(a + ((i + 0.5) / static_cast<double>(m)) * (b - a));
+          sample_segment_.push_back(static_cast<std::uint32_t>(segments_.size()));
+        }
+        segments_.push_back({a, b});
+      }
+    }
+    tree_.emplace(samples_);
+  }
+
+  struct Scratch {
+    std::vector<Index> near;
+    std::vector<std::uint32_t> segments;
+  };
+
+  // The distance from p (on a curve going along `tangent`) to the nearest point of the curves
+  // facing it, or `limit` if none is nearer.
+  double operator()(const Vec3& p, const Vec3& tangent, double limit, Scratch& s) const {
+    const double reach = limit + step_;
+    tree_->within(p, reach * reach, s.near);
+    s.segments.clear();
+    for (const Index k : s.near) s.segments.push_back(sample_segment_[k]);
+    std::sort(s.segments.begin(), s.segments.end());
+    s.segments.erase(std::unique(s.segments.begin(), s.segments.end()), s.segments.end());
+    double best = limit;
+    for (const std::uint32_t k : s.segments) {
+      const auto& [a, b] = segments_[k];
+      const Vec3 ab = b - a;
+      const double length2 = dot(ab, ab);
+      if (length2 == 0) continue;
+      const Vec3 q = a + std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) * ab;
+      const double d = distance(p, q);
+      // The segments through p itself, and rounding-level distances, are no gap.
+      if (!(d < best) || d <= 1e-9 * step_) continue;
+      const Vec3 chord = (1 / d) * (q - p);
+      if (std::abs(dot(chord, tangent)) > kFacingCos) continue;
+      if (std::abs(dot(chord, ab)) > kFacingCos * std::sqrt(length2)) continue;
+      best = d;
+    }
+    return best;
+  }
+
+ private:
+  double step_;
+  std::vector<Vec3> samples_;
+  std::vector<std::uint32_t> sample_segment_;
+  std::vector<std::pair<Vec3, Vec3>> segments_;
+  std::optional<PointTree> tree_;
+};
+
+double median_of(std::vector<double> x) {
+  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+  return x[x.size() / 2];
+}
+
+}  // namespace
+
+std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Features& features,
+                                           std::vector<double> sizes) {
+  const CurveProjector curves(mesh, features);
+  // Each curve vertex (a corner once per curve it ends), with its curve and place on it.
+  struct Place {
+    std::size_t curve, index;
+    Index v;
+  };
+  std::vector<Place> places;
+  std::vector<double> limits;
+  double total = 0;
+  for (std::size_t c = 0; c < curves.size(); ++c) {
+    total += curves.length(c);
+    for (std::size_t i = 0; i < features.curves[c].vertices.size(); ++i) {
+      const Index v = features.curves[c].vertices[i];
+      if (!(sizes[v] > 0) || !std::isfinite(sizes[v])) continue;
+      places.push_back({c, i, v});
+      limits.push_back(sizes[v]);
+    }
+  }
+  if (places.empty() || !(total > 0)) return sizes;
+  const GapFinder gap_at(
+      mesh, features,
+      std::max(median_of(std::move(limits)) / kSamplesPerSize, total / kMaxSamples));
+
+  // Per place, the narrowest gap under its size that goes on: each alone, in parallel, then
+  // lowered into `sizes` in order (the same whatever the thread count).
+  std::vector<double> gap(places.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, places.size()), [&](const auto& range) {
+    GapFinder::Scratch scratch;
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      const auto [c, i, v] = places[k];
+      const std::vector<Index>& on = features.curves[c].vertices;
+      const std::size_t n = on.size();
+      const bool closed = curves.closed(c);
+      const double limit = sizes[v], u = curves.arclengths(c)[i], length = curves.length(c);
+      // The direction of the curve through the vertex (one-sided at an end).
+      const Vec3 prev = mesh.vertices[!closed && i == 0 ? v : on[(i + n - 1) % n]];
+      const Vec3 next = mesh.vertices[!closed && i + 1 == n ? v : on[(i + 1) % n]];
+      const double g = gap_at(mesh.vertices[v], unit_or_zero(next - prev), limit, scratch);
+      gap[k] = limit;
+      if (!(g < limit)) continue;
+      // Probes about a gap further on, both ways, no further than halfway to an end.
+      for (const double way : {-1.0, 1.0}) {
+        const double room = closed ? length / 2 : way > 0 ? length - u : u;
+        const double along = std::min(g, room / 2);
+        if (!(along > 0)) continue;
+        const double probe = u + way * along;
+        if (gap_at(curves.at(c, probe), curves.direction(c, probe), kGoesOn * g, scratch) <
+            kGoesOn * g) {
+          gap[k] = g;
+          break;
+        }
+      }
+    }
+  });
+  for (std::size_t k = 0; k < places.size(); ++k)
+    sizes[places[k].v] = std::min(sizes[places[k].v], gap[k]);
+  return sizes;
+}
+
+}  // namespace cvtmesh

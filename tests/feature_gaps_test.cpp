@@ -1,0 +1,156 @@
+// The local feature size near features (issue 20 item 1): feature curves narrow the sizes of
+// their vertices to the gap across which another part of them faces them, on flat sheets whose
+// gaps are known.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "cvtmesh/sizing.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+// The boundary's curves, split at its corners (turns over 60°).
+Features outline(const TriangleMesh& mesh) {
+  return detect_features(mesh, FeatureSettings{});
+}
+
+TEST(FeatureGaps, AStripIsAsNarrowAsItIsWideAndItsRightAngledCornersNarrowNothing) {
+  // [0,10] × [0,1]: the long sides face each other 1 apart, corners included; the short sides
+  // face only each other, 10 apart, beyond the limit of 3.
+  const TriangleMesh strip = mapped_grid(100, 10, [](double u, double v) {
+    return Vec3{10 * u, v, 0};
+  });
+  const std::vector<double> sizes =
+      capped_by_feature_gaps(strip, outline(strip), std::vector<double>(strip.vertices.size(), 3));
+  int long_side = 0, short_side = 0, corners = 0;
+  for (Index v = 0; v < strip.vertices.size(); ++v) {
+    const Vec3& p = strip.vertices[v];
+    const bool on_long = p.y == 0 || p.y == 1, on_short = p.x == 0 || p.x == 10;
+    if (on_long && !on_short) {
+      EXPECT_NEAR(sizes[v], 1.0, 1e-12) << "long side at x = " << p.x;
+      ++long_side;
+    } else if (on_long) {
+      EXPECT_NEAR(sizes[v], 1.0, 1e-12) << "corner at " << p.x << ", " << p.y;
+      ++corners;
+    } else {
+      EXPECT_EQ(sizes[v], 3.0) << (on_short ? "short side" : "inside") << " at " << p.x << ", "
+                               << p.y;
+      short_side += on_short;
+    }
+  }
+  EXPECT_EQ(long_side, 2 * 99);
+  EXPECT_EQ(short_side, 2 * 9);
+  EXPECT_EQ(corners, 4);
+}
+
+TEST(FeatureGaps, AClosedCurveIsAsNarrowAsItsWidth) {
+  // A circle of radius 1 faces itself at 120° and beyond: √3 away (on 96 segments, within one
+  // segment's turn).
+  const TriangleMesh round = disk(8, 96);
+  const std::vector<double> sizes =
+      capped_by_feature_gaps(round, outline(round), std::vector<double>(round.vertices.size(), 5));
+  for (Index v = 0; v < round.vertices.size(); ++v) {
+    if (std::abs(norm(round.vertices[v]) - 1) < 1e-12)
+      EXPECT_NEAR(sizes[v], std::sqrt(3.0), 0.04);
+    else
+      EXPECT_EQ(sizes[v], 5.0);
+  }
+}
+
+TEST(FeatureGaps, AWedgeUnder60DegreesNarrowsTowardsItsTip) {
+  // The sheet between two rays 20° apart, from radius 0.1 to 1: a point of one ray at radius r
+  // faces the other r sin 20° away. Only gaps under the limit (0.1) are looked for.
+  const double wedge = 20 * std::numbers::pi / 180;
+  const TriangleMesh sheet = mapped_grid(90, 12, [&](double u, double v) {
+    const double r = 0.1 + 0.9 * u, a = wedge * v;
+    return Vec3{r * std::cos(a), r * std::sin(a), 0};
+  });
+  const std::vector<double> sizes = capped_by_feature_gaps(
+      sheet, outline(sheet), std::vector<double>(sheet.vertices.size(), 0.1));
+  int checked = 0;
+  for (Index v = 0; v < sheet.vertices.size(); ++v) {
+    const Vec3& p = sheet.vertices[v];
+    const double r = norm(p);
+    if (p.y != 0 || r < 0.15 || r > 0.95) continue;  // the ray y = 0, away from the arcs
+    EXPECT_NEAR(sizes[v], std::min(0.1, r * std::sin(wedge)), 1e-9) << "at radius " << r;
+    ++checked;
+  }
+  EXPECT_GT(checked, 70);
+}
+
+// Curves along polylines that join end to start (a corner where one ends and the next starts).
+std::pair<TriangleMesh, Features> chained(const std::vector<std::vector<Vec3>>& lines) {
+  TriangleMesh mesh;
+  Features features;
+  for (const std::vector<Vec3>& line : lines) {
+    FeatureCurve curve;
+    if (!mesh.vertices.empty()) curve.vertices.push_back(mesh.vertices.size() - 1);
+    for (std::size_t i = mesh.vertices.empty() ? 0 : 1; i < line.size(); ++i) {
+      curve.vertices.push_back(mesh.vertices.size());
+      mesh.vertices.push_back(line[i]);
+    }
+    features.curves.push_back(curve);
+  }
+  return {mesh, features};
+}
+
+double narrowest(const std::vector<std::vector<Vec3>>& lines, double limit) {
+  const auto [mesh, features] = chained(lines);
+  const std::vector<double> sizes =
+      capped_by_feature_gaps(mesh, features, std::vector<double>(mesh.vertices.size(), limit));
+  return *std::min_element(sizes.begin(), sizes.end());
+}
+
+TEST(FeatureGaps, AZigzagOfAJaggedRimIsNoNarrowPlace) {
+  // A scan's rim that doubles back for one short edge (4.4 long) and goes on: its two corners
+  // face each other's curves across that edge, 2.2 apart, but a gap further along, the curves
+  // have parted.
+  EXPECT_EQ(
+      narrowest({{{24.5, -45.9, -10.5}, {27.2, -46, -10.5}, {29.7, -46.6, -9.4}, {35.4, -47.4, -7}},
+                 {{35.4, -47.4, -7}, {33.9, -47.9, -2.9}},
+                 {{33.9, -47.9, -2.9}, {36.7, -47.6, 0}, {36.3, -48, 2.1}, {37.6, -48.5, 7.6}}},
+                10),
+      10);
+  // A rim that doubles back and runs beside itself, 2 apart, is a slot.
+  EXPECT_NEAR(narrowest({{{25, 0, 0}, {30, 0, 0}, {35, 0, 0}},
+                         {{35, 0, 0}, {35, 0, 2}},
+                         {{35, 0, 2}, {30, 0, 2}, {25, 0, 2}}},
+                        10),
+              2, 1e-12);
+}
+
+TEST(FeatureGaps, TheLocalFeatureSizeFallsToThemAndIsTheSameOnAnyThreadCount) {
+  // A flat sheet has no poles: its lfs is the size of the whole, but near its sides the strip's
+  // width.
+  const TriangleMesh strip = mapped_grid(60, 6, [](double u, double v) {
+    return Vec3{6 * u, v, 0};
+  });
+  const Features features = outline(strip);
+  LfsSettings s;
+  s.gradation = 0;
+  s.features = &features;
+  const std::vector<double> lfs = local_feature_size(strip, s);
+  for (Index v = 0; v < strip.vertices.size(); ++v) {
+    const Vec3& p = strip.vertices[v];
+    if ((p.y == 0 || p.y == 1) && p.x > 0 && p.x < 6) {
+      EXPECT_NEAR(lfs[v], 1.0, 1e-12);
+    }
+  }
+  std::vector<double> one;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = local_feature_size(strip, s);
+  }
+  EXPECT_EQ(one, lfs);
+}
+
+}  // namespace
+}  // namespace cvtmesh
