@@ -14,6 +14,10 @@
 //     wide (issue 19: coarse inputs cost what their cells cost); rvd_over_delaunay as above.
 //   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
 //     compares to random seeds on the same mesh (exact_fallback_pct, ties).
+//   BM_RvdNeighborCache/N: icosphere level 5, N random seeds moved by 2% of their spacing, as
+//     between two steps of the optimization: an RVD pass with integrals whose nearest-seed lists
+//     come from a NeighborCache filled before the move (cached_s) against one that searches them
+//     (fresh_s); cached_over_fresh (issue 19 item 2).
 //   BM_MultiNerveExtraction/N: the output's extraction (restricted Delaunay triangulation with
 //     the cells' pieces, paper §4.4: what every polishing and topology round runs) on icosphere
 //     level 5 (20,480 faces) with N random seeds, against an RVD pass with integrals on the same
@@ -24,6 +28,7 @@
 #include <tbb/global_control.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -163,6 +168,43 @@ void BM_RvdDegenerate(benchmark::State& state) {
 BENCHMARK(BM_RvdDegenerate)
     ->Arg(0)
     ->Arg(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+void BM_RvdNeighborCache(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<Vec3> before = sample_surface(mesh, n, 1);
+  std::vector<Vec3> after = before;
+  const double spacing = std::sqrt(4 * 3.141592653589793 / static_cast<double>(n));
+  for (std::size_t s = 0; s < n; ++s)  // a fixed, spread-out move (no random numbers needed)
+    after[s] += 0.02 * spacing * Vec3{std::sin(3.0 * s), std::cos(5.0 * s), std::sin(7.0 * s)};
+  const auto pass = [&](const RestrictedVoronoiDiagram& rvd, const Clock::time_point start) {
+    CellIntegrator integrator(rvd);
+    const TraversalStats stats = rvd.traverse(integrator);
+    benchmark::DoNotOptimize(integrator.result().total_energy);
+    return std::pair(seconds(start), stats.radius_searches);
+  };
+  for (auto _ : state) {
+    NeighborCache cache;
+    const RestrictedVoronoiDiagram first(mesh, before, cache);
+    auto start = Clock::now();
+    const auto [fresh_s, fresh_searches] = pass(RestrictedVoronoiDiagram(mesh, after), start);
+    start = Clock::now();
+    const auto [cached_s, cached_searches] =
+        pass(RestrictedVoronoiDiagram(mesh, after, cache), start);
+    state.SetIterationTime(fresh_s + cached_s);
+    state.counters["fresh_s"] = fresh_s;
+    state.counters["cached_s"] = cached_s;
+    state.counters["cached_over_fresh"] = cached_s / fresh_s;
+    state.counters["radius_searches_fresh"] = static_cast<double>(fresh_searches);
+    state.counters["radius_searches_cached"] = static_cast<double>(cached_searches);
+  }
+}
+BENCHMARK(BM_RvdNeighborCache)
+    ->Arg(5'000)
+    ->Arg(20'000)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

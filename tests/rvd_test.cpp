@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
+#include <numeric>
 #include <tuple>
 
 #include "cvtmesh/errors.hpp"
@@ -232,6 +235,26 @@ TEST(RvdDegenerate, SeedsOnARegularGridAtMeshVertices) {
   EXPECT_GT(stats.perturbed_ties, 0u);  // the perturbation, not luck, decided the ties
 }
 
+TEST(RvdDegenerate, SeedsJustOffMeshVertices) {
+  // Seeds at random vertices of a torus, scaled by 1.001: near-ties everywhere, where some
+  // crossings' rounded positions bend a polygon a little; its fan integrals, with signed areas,
+  // still sum to the cell's area from whichever vertex the fan starts.
+  const TriangleMesh m = torus(1, 0.4, 48, 24);
+  for (std::uint64_t draw = 0; draw < 3; ++draw) {
+    // 300 of its vertices, drawn without repeats.
+    std::vector<Index> ids(m.vertices.size());
+    std::iota(ids.begin(), ids.end(), Index{0});
+    CounterRng random(draw, 0);
+    for (std::size_t k = 0; k < 300; ++k)
+      std::swap(ids[k], ids[k + static_cast<std::size_t>(random.uniform() *
+                                                         static_cast<double>(ids.size() - k))]);
+    std::vector<Vec3> seeds;
+    for (std::size_t k = 0; k < 300; ++k) seeds.push_back(1.001 * m.vertices[ids[k]]);
+    SCOPED_TRACE(draw);
+    expect_tiling(m, seeds);
+  }
+}
+
 TEST(RvdDegenerate, SeedsExactlyOnMeshEdges) {
   const TriangleMesh m = cube(4);
   std::vector<Vec3> seeds;
@@ -418,6 +441,60 @@ TEST(RestrictedDelaunay, WellSampledSphereIsAClosedManifoldOfTheSameTopology) {
 
 TEST(RestrictedDelaunay, WellSampledTorusIsAClosedManifoldOfTheSameTopology) {
   expect_manifold_rdt(torus(1, 0.4, 80, 32), 1500);
+}
+
+// Every polygon as its vertices' symbols and points, by (seed, triangle), each rotated to start at
+// its smallest vertex (clipping by the same bisectors in another order may start elsewhere).
+class PolygonRecord : public PolygonSink {
+ public:
+  using Vertex = std::tuple<std::array<std::int32_t, 2>, double, double, double>;
+  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    std::vector<Vertex> v;
+    for (const RvdVertex& x : p.vertices)
+      v.emplace_back(x.symbols, x.point.x, x.point.y, x.point.z);
+    std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+    chunks_[chunk].push_back({{p.seed, p.triangle}, v});
+  }
+  void end() override {
+    for (const auto& c : chunks_)
+      for (const auto& [key, v] : c) polygons[key] = v;
+  }
+  std::map<std::pair<Index, Index>, std::vector<Vertex>> polygons;
+
+ private:
+  std::vector<std::vector<std::pair<std::pair<Index, Index>, std::vector<Vertex>>>> chunks_;
+};
+
+TEST(Rvd, ANeighborCacheGivesTheSameDiagramAsAFreshSearch) {
+  // Seeds moved step by step, as an optimization moves them: small steps keep the cached
+  // lists (re-sorted, their complete radii shrunk), a large one makes a fresh search; the
+  // polygons are the same as without the cache every time.
+  const TriangleMesh m = torus(1, 0.4, 96, 40);
+  std::vector<Vec3> seeds = sample_surface(m, 1500, 4);
+  const double spacing = std::sqrt(4 * std::numbers::pi * std::numbers::pi * 0.4 / 1500);
+  NeighborCache cache;
+  CounterRng random(11, 0);
+  const auto jitter = [&] { return 2 * random.uniform() - 1; };
+  int reused = 0;
+  for (const double step : {0.0, 0.02, 0.02, 0.05, 0.02, 1.0, 0.01}) {
+    for (Vec3& p : seeds) p += step * spacing * Vec3{jitter(), jitter(), jitter()};
+    PolygonRecord fresh, cached;
+    const RestrictedVoronoiDiagram searched(m, seeds), with_cache(m, seeds, cache);
+    CellIntegrator fresh_integrals(searched), cached_integrals(with_cache);
+    PolygonSink* fresh_sinks[] = {&fresh, &fresh_integrals};
+    PolygonSink* cached_sinks[] = {&cached, &cached_integrals};
+    searched.traverse(fresh_sinks);
+    with_cache.traverse(cached_sinks);
+    // The same polygons (the same start, so the same sums) to the last bit.
+    EXPECT_EQ(fresh_integrals.result().energy, cached_integrals.result().energy) << step;
+    EXPECT_EQ(fresh_integrals.result().mass, cached_integrals.result().mass) << step;
+    reused += with_cache.build_times().neighbors_reused;
+    EXPECT_EQ(with_cache.build_times().neighbors_reused, step > 0 && step < 0.5) << "step " << step;
+    ASSERT_EQ(fresh.polygons.size(), cached.polygons.size()) << "step " << step;
+    EXPECT_TRUE(fresh.polygons == cached.polygons) << "step " << step;
+  }
+  EXPECT_EQ(reused, 5);
 }
 
 TEST(Rvd, ResultsDoNotDependOnThreadCount) {

@@ -59,6 +59,25 @@ struct TraversalStats {
 
 struct RvdBuildTimes {
   double kdtree_seconds = 0, neighbors_seconds = 0;
+  bool neighbors_reused = false;  // the lists came from a NeighborCache, not a search
+};
+
+// The seeds' lists of nearest seeds, carried from one diagram to the next (issue 19 item 2): while
+// the seeds move little, as between the steps of an optimization, a diagram re-sorts the lists
+// by the new positions instead of searching them anew, with the radius within which each list
+// holds every seed shrunk by the moves; the diagram is the same either way. Empty until a
+// diagram fills it; one per sequence of diagrams over the same seeds.
+class NeighborCache {
+ public:
+  NeighborCache();
+  ~NeighborCache();
+  NeighborCache(const NeighborCache&) = delete;
+  NeighborCache& operator=(const NeighborCache&) = delete;
+
+ private:
+  friend class RestrictedVoronoiDiagram;
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 class RestrictedVoronoiDiagram {
@@ -67,6 +86,10 @@ class RestrictedVoronoiDiagram {
   // InvalidArgument for no seeds, a non-finite seed, or two identical seeds (naming both).
   // `surface` must outlive this object.
   RestrictedVoronoiDiagram(const TriangleMesh& surface, std::vector<Vec3> seeds);
+  // The same, with the lists from `cache` where the seeds moved little since, and left there
+  // for the next.
+  RestrictedVoronoiDiagram(const TriangleMesh& surface, std::vector<Vec3> seeds,
+                           NeighborCache& cache);
   ~RestrictedVoronoiDiagram();
   RestrictedVoronoiDiagram(RestrictedVoronoiDiagram&&) noexcept;
   RestrictedVoronoiDiagram& operator=(RestrictedVoronoiDiagram&&) noexcept;

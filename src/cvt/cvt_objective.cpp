@@ -74,7 +74,7 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
   const std::vector<Tangent> tangents = projector_ ? project(seeds) : std::vector<Tangent>{};
   interrupt_.check();
   ++evaluations_;
-  const RestrictedVoronoiDiagram rvd(surface_, seeds);
+  const RestrictedVoronoiDiagram rvd(surface_, seeds, neighbors_);
   CellIntegrator integrator(
       rvd, density_ ? std::span<const double>(*density_) : std::span<const double>{});
   InterruptSink stop(interrupt_);

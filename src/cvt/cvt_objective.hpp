@@ -73,6 +73,7 @@ class CvtObjective {
   const std::vector<double>* density_;
   int evaluations_ = 0;
   std::vector<SurfaceProjector::Foot> hints_;  // the feet of the last projection
+  NeighborCache neighbors_;                    // the seeds' nearest seeds, step to step
 };
 
 }  // namespace cvtmesh

@@ -289,8 +289,11 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
 
 RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVertex& b, Index j) {
   RvdVertex v;
-  const std::int32_t shared = common_symbol(a, b);
-  v.symbols = {shared, static_cast<std::int32_t>(j)};
+  const std::int32_t shared = common_symbol(a, b), k = static_cast<std::int32_t>(j);
+  // Two bisectors in a fixed order: their crossing, and its rounding, do not depend on which cut
+  // first (the bisectors' order differs with the candidate lists, see NeighborCache).
+  v.symbols =
+      shared >= 0 ? std::array{std::min(shared, k), std::max(shared, k)} : std::array{shared, k};
   const Definition def = define(v);
   const Vec3& xi = f.seeds[f.cell];
   if (def.bisectors == 1)

@@ -4,6 +4,7 @@
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
+#include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
 
@@ -26,9 +27,16 @@ struct FanIntegral {
   Vec3 moment;
 };
 
+// The area of triangle (a, b, c) signed along the unit normal n: a polygon's fan sums to its
+// area from any first vertex, even where rounding bends it a little (the fan triangles folded
+// over then subtract).
+double signed_area(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
+  return 0.5 * dot(cross(b - a, c - a), n);
+}
+
 FanIntegral integrate_triangle(const std::array<Vec3, 3>& p, const std::array<double, 3>& r,
-                               const Vec3& seed) {
-  const double area = triangle_area(p[0], p[1], p[2]);
+                               const Vec3& seed, const Vec3& n) {
+  const double area = signed_area(p[0], p[1], p[2], n);
   const double r_sum = r[0] + r[1] + r[2];
   FanIntegral f;
   f.mass = area * r_sum / 3;
@@ -56,8 +64,9 @@ FanIntegral integrate_triangle(const std::array<Vec3, 3>& p, const std::array<do
 
 // The same for ρ = 1, the common case, in a third of the operations: ∫‖x − seed‖² over a
 // triangle is A/6 (Σ_a ‖u_a‖² + Σ_{a<b} u_a·u_b) for its corners u relative to the seed.
-FanIntegral integrate_uniform(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& seed) {
-  const double area = triangle_area(p0, p1, p2);
+FanIntegral integrate_uniform(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& seed,
+                              const Vec3& n) {
+  const double area = signed_area(p0, p1, p2, n);
   const Vec3 u0 = p0 - seed, u1 = p1 - seed, u2 = p2 - seed;
   const Vec3 sum = u0 + u1 + u2;
   // Σ_a ‖u_a‖² + Σ_{a<b} u_a·u_b = (‖Σ u‖² + Σ ‖u_a‖²) / 2.
@@ -88,10 +97,12 @@ void CellIntegrator::begin(std::size_t chunks) {
 void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
   const Vec3& seed = rvd_.seeds()[poly.seed];
   const auto& v = poly.vertices;
+  const auto corners = rvd_.surface().corners(poly.triangle);
+  const Vec3 n = unit_normal(corners[0], corners[1], corners[2]);
   Contribution c{poly.seed, 0, 0, {}};
   if (density_.empty()) {
     for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-      const FanIntegral f = integrate_uniform(v[0].point, v[k].point, v[k + 1].point, seed);
+      const FanIntegral f = integrate_uniform(v[0].point, v[k].point, v[k + 1].point, seed, n);
       c.mass += f.mass;
       c.energy += f.energy;
       c.moment += f.moment;
@@ -99,7 +110,6 @@ void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
     chunks_[chunk].push_back(c);
     return;
   }
-  const auto corners = rvd_.surface().corners(poly.triangle);
   auto rho = [&](const Vec3& p) {
     const Triangle& f = rvd_.surface().triangles[poly.triangle];
     const auto l = barycentric(p, corners);
@@ -110,7 +120,7 @@ void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
   for (std::size_t k = 1; k + 1 < v.size(); ++k) {
     const double r_next = rho(v[k + 1].point);
     const FanIntegral f =
-        integrate_triangle({v[0].point, v[k].point, v[k + 1].point}, {r0, r_prev, r_next}, seed);
+        integrate_triangle({v[0].point, v[k].point, v[k + 1].point}, {r0, r_prev, r_next}, seed, n);
     c.mass += f.mass;
     c.energy += f.energy;
     c.moment += f.moment;

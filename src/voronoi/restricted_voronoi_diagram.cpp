@@ -6,6 +6,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -43,6 +44,15 @@ std::size_t triangles_per_chunk(std::size_t triangles, std::size_t seeds) {
 // radius searches (see Impl::for_candidates). igea → 10k seeds: 12 makes a whole remesh 2-3%
 // faster than 20 (fewer kNN results per seed and evaluation, few more radius searches).
 constexpr std::size_t kStoredNeighbors = 12;
+// A neighbour cache's lists are kept while the median of their complete radii is at least this
+// fraction of a fresh search's: a step of an optimization moves seeds a fraction of their
+// spacing.
+constexpr double kKeptReach = 0.75;
+
+double median_of(std::vector<double> x) {
+  std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2), x.end());
+  return x[x.size() / 2];
+}
 
 using Polygon = std::vector<RvdVertex>;
 
@@ -66,6 +76,11 @@ struct RestrictedVoronoiDiagram::Impl {
   std::vector<Vec3> seeds;
   SeedNeighbors neighbors;
   std::unique_ptr<PointTree> nearest;
+
+  // Takes the seeds, builds the kd-tree and the lists (from `cache` if it has them for seeds
+  // that moved little, then left there).
+  void build(const TriangleMesh& on, std::vector<Vec3> points,
+             std::unique_ptr<NeighborCache::State>* cache);
 
   // Zero-area triangles (exact test) have no facet plane, and nothing to clip.
   bool flat(std::size_t t) const {
@@ -127,9 +142,12 @@ struct RestrictedVoronoiDiagram::Impl {
       return d2 * (1 - 1e-10) <= 4 * reach2();
     };
     const std::span<const Index> stored = neighbors.of(i);
-    for (Index j : stored)
-      if (!within(j) || !visit(j)) return;
-    if (stored.size() + 1 == seeds.size()) return;  // no other seed
+    for (Index j : stored) {
+      if (!within(j)) break;
+      if (!visit(j)) return;
+    }
+    // Done if the list holds every seed within reach, else a radius search finds the rest.
+    if (4 * reach2() * (1 + 1e-6) < neighbors.complete2[i]) return;
     ++s.radius_searches;
     nearest->within(seeds[i], 4 * reach2() * (1 + 1e-6), s.spare);
     // In the search's own order (deterministic; clipping's result does not depend on it),
@@ -250,24 +268,71 @@ struct RestrictedVoronoiDiagram::Impl {
             s.queue.push_back(static_cast<Index>(j));
           }
       ++s.polygons;
+      // From its least vertex by symbols: the same polygon, and the same sums over it, whatever
+      // order the bisectors cut in (it differs with the candidate lists, see NeighborCache).
+      std::rotate(s.polygon.begin(),
+                  std::min_element(
+                      s.polygon.begin(), s.polygon.end(),
+                      [](const RvdVertex& a, const RvdVertex& b) { return a.symbols < b.symbols; }),
+                  s.polygon.end());
       const RvdPolygon polygon{i, static_cast<Index>(t), s.polygon};
       for (PolygonSink* sink : sinks) sink->polygon(chunk, polygon);
     }
   }
 };
 
+struct NeighborCache::State {
+  SeedNeighbors lists;
+  std::vector<Vec3> at;     // the seeds the lists are for
+  double fresh_median = 0;  // of the complete radii (squared) when last searched
+};
+
+NeighborCache::NeighborCache() = default;
+NeighborCache::~NeighborCache() = default;
+
 RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
                                                    std::vector<Vec3> seeds)
     : impl_(std::make_unique<Impl>()) {
-  impl_->surface = &surface;
-  impl_->seeds = std::move(seeds);
-  reject_bad_seeds(impl_->seeds);
+  impl_->build(surface, std::move(seeds), nullptr);
+}
+
+RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
+                                                   std::vector<Vec3> seeds, NeighborCache& cache)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->build(surface, std::move(seeds), &cache.state_);
+}
+
+void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<Vec3> points,
+                                           std::unique_ptr<NeighborCache::State>* cache) {
+  surface = &on;
+  seeds = std::move(points);
+  reject_bad_seeds(seeds);
   auto start = std::chrono::steady_clock::now();
-  impl_->nearest = std::make_unique<PointTree>(impl_->seeds);
-  impl_->times.kdtree_seconds = seconds_since(start);
+  nearest = std::make_unique<PointTree>(seeds);
+  times.kdtree_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  impl_->neighbors = nearest_neighbors(impl_->seeds, *impl_->nearest, kStoredNeighbors);
-  impl_->times.neighbors_seconds = seconds_since(start);
+  NeighborCache::State* state = cache ? cache->get() : nullptr;
+  if (state && state->at.size() == seeds.size()) {
+    SeedNeighbors moved = moved_neighbors(state->lists, state->at, seeds);
+    // Kept while most lists still reach kKeptReach of what a search gives; past that, radius
+    // searches would cost more than the search.
+    if (median_of(moved.complete2) >= kKeptReach * kKeptReach * state->fresh_median) {
+      neighbors = std::move(moved);
+      times.neighbors_reused = true;
+    }
+  }
+  if (neighbors.ids.empty()) {
+    neighbors = nearest_neighbors(seeds, *nearest, kStoredNeighbors);
+    if (cache) {
+      if (!state) state = (*cache = std::make_unique<NeighborCache::State>()).get();
+      state->fresh_median = median_of(neighbors.complete2);
+    }
+  }
+  if (state) {
+    state->lists = neighbors;
+    state->at = seeds;
+  }
+  times.neighbors_seconds = seconds_since(start);
 }
 
 RestrictedVoronoiDiagram::~RestrictedVoronoiDiagram() = default;

@@ -6,12 +6,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
 #include "cvtmesh/errors.hpp"
 
 namespace cvtmesh {
+
+namespace {
+
+// Margins for the rounding of distances computed in floating point, far above it.
+constexpr double kRoundedDown = 1 - 1e-9, kRoundedUp = 1 + 1e-9;
+
+}  // namespace
 
 void reject_bad_seeds(const std::vector<Vec3>& seeds) {
   if (seeds.empty()) throw InvalidArgument("no seeds");
@@ -44,6 +52,7 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
   n.offsets.resize(seeds.size() + 1);
   for (std::size_t s = 0; s <= seeds.size(); ++s) n.offsets[s] = s * k;
   n.ids.resize(seeds.size() * k);
+  n.complete2.assign(seeds.size(), std::numeric_limits<double>::infinity());
   tbb::enumerable_thread_specific<std::vector<Index>> found;
   tbb::parallel_for(
       tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
@@ -54,9 +63,34 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
           near.resize(k);
           sort_by_distance(seeds, s, near);
           std::copy(near.begin(), near.end(), n.ids.begin() + static_cast<std::ptrdiff_t>(s * k));
+          // Every other seed is at least as far as the last (up to the distances' rounding).
+          if (k > 0 && k + 1 < seeds.size())
+            n.complete2[s] =
+                kRoundedDown * dot(seeds[near[k - 1]] - seeds[s], seeds[near[k - 1]] - seeds[s]);
         }
       });
   return n;
+}
+
+SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& was,
+                              const std::vector<Vec3>& seeds) {
+  std::vector<double> move(seeds.size());
+  double largest = 0;
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+    largest = std::max(largest, move[s] = distance(seeds[s], was[s]));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256),
+                    [&](const auto& r) {
+                      for (Index s = r.begin(); s < r.end(); ++s) {
+                        const std::span<Index> ids(previous.ids.data() + previous.offsets[s],
+                                                   previous.ids.data() + previous.offsets[s + 1]);
+                        sort_by_distance(seeds, s, ids);
+                        double& c = previous.complete2[s];
+                        if (std::isinf(c)) continue;
+                        const double reach = std::sqrt(c) - (move[s] + largest) * kRoundedUp;
+                        c = reach > 0 ? kRoundedDown * reach * reach : 0;
+                      }
+                    });
+  return previous;
 }
 
 }  // namespace cvtmesh

@@ -18,6 +18,10 @@ namespace cvtmesh {
 struct SeedNeighbors {
   std::vector<std::size_t> offsets;
   std::vector<Index> ids;
+  // Per seed, a squared distance within which its list holds every other seed (infinite when
+  // it holds them all): beyond the last candidate a bisector may still matter, and a radius
+  // search finds the rest.
+  std::vector<double> complete2;
 
   std::span<const Index> of(Index s) const {
     return {ids.data() + offsets[s], ids.data() + offsets[s + 1]};
@@ -31,6 +35,13 @@ void reject_bad_seeds(const std::vector<Vec3>& seeds);
 // Each seed's k nearest other seeds (fewer when there are fewer seeds).
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
                                 std::size_t k);
+
+// The lists of `previous`, made for the seeds at `was`, for the same seeds now at `seeds` (issue
+// 19: seeds that moved little since keep their candidates, and no kd-tree search is needed):
+// each re-sorted by distance, its complete radius shrunk by its seed's move plus the largest
+// move (a seed outside a list was at least that far from it, and both have moved since).
+SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& was,
+                              const std::vector<Vec3>& seeds);
 
 // Sorts seed ids by squared distance to seed s, ties by id.
 void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> ids);
