@@ -313,7 +313,7 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
   start = std::chrono::steady_clock::now();
   NeighborCache::State* state = cache ? cache->get() : nullptr;
   if (state && state->at.size() == seeds.size()) {
-    SeedNeighbors moved = moved_neighbors(state->lists, state->at, seeds);
+    SeedNeighbors moved = moved_neighbors(state->lists, state->at, seeds, *nearest);
     // Kept while most lists still reach kKeptReach of what a search gives; past that, radius
     // searches would cost more than the search.
     if (median_of(moved.complete2) >= kKeptReach * kKeptReach * state->fresh_median) {

@@ -18,6 +18,8 @@ namespace {
 
 // Margins for the rounding of distances computed in floating point, far above it.
 constexpr double kRoundedDown = 1 - 1e-9, kRoundedUp = 1 + 1e-9;
+// One seed in this many, those that moved most, is checked one by one (moved_neighbors).
+constexpr std::size_t kMoversPer = 100;
 
 }  // namespace
 
@@ -73,11 +75,17 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
 }
 
 SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& was,
-                              const std::vector<Vec3>& seeds) {
+                              const std::vector<Vec3>& seeds, const PointTree& tree) {
   std::vector<double> move(seeds.size());
-  double largest = 0;
-  for (std::size_t s = 0; s < seeds.size(); ++s)
-    largest = std::max(largest, move[s] = distance(seeds[s], was[s]));
+  for (std::size_t s = 0; s < seeds.size(); ++s) move[s] = distance(seeds[s], was[s]);
+  // The few seeds that moved most (an optimization's step moves some several times as far as
+  // nearly all others) are handled one by one, so that the others' radii shrink by the bulk's
+  // largest move, not theirs.
+  std::vector<double> sorted = move;
+  const std::size_t bulk = sorted.size() - 1 - sorted.size() / kMoversPer;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(bulk),
+                   sorted.end());
+  const double largest = sorted[bulk];
   tbb::parallel_for(tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256),
                     [&](const auto& r) {
                       for (Index s = r.begin(); s < r.end(); ++s) {
@@ -90,6 +98,23 @@ SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& w
                         c = reach > 0 ? kRoundedDown * reach * reach : 0;
                       }
                     });
+  // A seed that moved farther than `largest` bounds the radius of every list it is not in by
+  // its distance now, where it comes within that radius (serially, in order: the same result
+  // on any thread count).
+  double reach2 = 0;
+  for (const double c : previous.complete2)
+    if (!std::isinf(c)) reach2 = std::max(reach2, c);
+  std::vector<Index> near;
+  for (Index x = 0; x < seeds.size(); ++x) {
+    if (!(move[x] > largest)) continue;
+    tree.within(seeds[x], reach2, near);
+    for (const Index s : near) {
+      double& c = previous.complete2[s];
+      const std::span<const Index> list = previous.of(s);
+      if (s == x || std::find(list.begin(), list.end(), x) != list.end()) continue;
+      c = std::min(c, kRoundedDown * dot(seeds[x] - seeds[s], seeds[x] - seeds[s]));
+    }
+  }
   return previous;
 }
 

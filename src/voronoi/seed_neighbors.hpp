@@ -37,11 +37,13 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
                                 std::size_t k);
 
 // The lists of `previous`, made for the seeds at `was`, for the same seeds now at `seeds` (issue
-// 19: seeds that moved little since keep their candidates, and no kd-tree search is needed):
-// each re-sorted by distance, its complete radius shrunk by its seed's move plus the largest
-// move (a seed outside a list was at least that far from it, and both have moved since).
+// 19: seeds that moved little since keep their candidates, and no kNN search is needed): each
+// re-sorted by distance, its complete radius shrunk by its seed's move plus the largest move
+// of all but the 1% that moved most (a seed outside a list was at least that far from it, and
+// both have moved since), and by the distance now of each of those 1% outside it (found with
+// `tree`, over `seeds`).
 SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& was,
-                              const std::vector<Vec3>& seeds);
+                              const std::vector<Vec3>& seeds, const PointTree& tree);
 
 // Sorts seed ids by squared distance to seed s, ties by id.
 void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> ids);
