@@ -11,6 +11,7 @@
 #include "geometry/self_crossings.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/flip_links.hpp"
+#include "remesh/last_step.hpp"
 #include "remesh/output_defects.hpp"
 
 namespace cvtmesh {
@@ -188,6 +189,8 @@ struct Assessment {
   std::vector<FeatureLink> missing;
   bool topology_kept = true;
   OutputDefects defects;  // of `finished`, if its topology is not kept
+  // Its topology kept, or given back by the last step (finish_manifold on a copy).
+  bool rescued = true;
   std::size_t links_flipped = 0, tips_closed = 0;
   // Better outputs compare greater: the input's topology, then fewer triangles at defects
   // (non-manifold edges and vertices, stray boundary edges, folds), then more corners, then fewer
@@ -217,9 +220,14 @@ Assessment assess(const MendContext& m, const SpecialEdges& special, const Trian
   const TopologyReport& in = m.surface_topology;
   if (in.is_manifold()) {
     a.topology_kept = t.is_manifold() && same_topology(t, in);
-    if (!a.topology_kept)
+    if (!a.topology_kept) {
       a.defects = find_output_defects(
           a.finished, boundary_seeds(m, special, constraints, a.finished), in.orientable);
+      TriangleMesh last = a.finished;
+      finish_manifold(last, in, m.projector);
+      const TopologyReport after = analyze_topology(last);
+      a.rescued = after.is_manifold() && same_topology(after, in);
+    }
   } else {
     // The input's own non-manifold edges are no defects of its output: refining around them
     // mended nothing (a T of three sheets lost 1.1 s in rounds that all kept the first output).
@@ -227,6 +235,7 @@ Assessment assess(const MendContext& m, const SpecialEdges& special, const Trian
         find_output_defects(a.finished, boundary_seeds(m, special, constraints, a.finished),
                             in.orientable, branch_seeds(m, special, constraints, a.finished));
     a.topology_kept = a.defects.empty() && same_topology(t, in);
+    a.rescued = a.topology_kept;  // no last step for a non-manifold input
   }
   std::vector<bool> used(a.finished.vertices.size(), false);
   for (const Triangle& tri : a.finished.triangles)
@@ -261,6 +270,10 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   };
   const SpecialEdges special = special_edges(m);
   std::optional<Round> best;
+  // The best of the rounds whose output the last step gives the input's topology: the rounds'
+  // best by defects may not be one (femur.off at 2k: the best round's defects, removed, cut off
+  // a handle; topology lost), and then this one is kept instead (issue 18 item 1: validity).
+  std::optional<Round> best_rescued;
   int since_best = 0;          // rounds since the best was found
   std::size_t last_added = 0;  // seeds the last round added
   int doublings = 0;           // rounds in a row, without progress, that added twice the last's
@@ -280,6 +293,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.
     const std::vector<Index> vertex_seed = output.vertex_seed;
+    if (a.rescued && (!best_rescued || !(a.score < best_rescued->assessment.score)))
+      best_rescued = Round{output, seeds, constraints, a, report};
     if (!best || !(a.score < best->assessment.score)) {
       best = Round{std::move(output), seeds, constraints, a, report};
       since_best = 0;
@@ -364,6 +379,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     output = extract_polished(m.surface, seeds, m.placement, polish);
     report.polish_rounds += output.rounds;
   }
+  if (!best->assessment.rescued && best_rescued) best = std::move(best_rescued);
   output = std::move(best->output);
   output.mesh = std::move(best->assessment.finished);
   seeds = std::move(best->seeds);

@@ -20,11 +20,10 @@
 #include "features/renumber_features.hpp"
 #include "geometry/area_sampler.hpp"
 #include "quality/hausdorff_with_tree.hpp"
-#include "remesh/close_holes.hpp"
 #include "remesh/edge_length_ratio.hpp"
 #include "remesh/flat_ears.hpp"
 #include "remesh/improve_shapes.hpp"
-#include "remesh/make_manifold.hpp"
+#include "remesh/last_step.hpp"
 #include "remesh/mend_topology.hpp"
 #include "remesh/valence_three.hpp"
 #include "sizing/size_field.hpp"
@@ -310,19 +309,11 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.mesh = std::move(output.mesh);
   // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold. Only for
   // a manifold input: a non-manifold input edge is a feature the output keeps (issue 18).
-  if (result.input_topology.is_manifold()) {
-    const std::vector<Triangle> removed =
-        make_manifold(result.mesh, result.input_topology.orientable);
-    result.triangles_removed = removed.size();
-    if (!removed.empty()) {
-      const ClosedHoles closed = close_opened_holes(
-          result.mesh, removed, result.input_topology, result.input_topology.orientable,
-          [&](const Vec3& p) { return projector->nearest(p).point; });
-      result.holes_closed = closed.holes;
-      result.triangles_closing_holes = closed.triangles;
-      result.vertices_closing_holes = closed.vertices;
-    }
-  }
+  const LastStep last = finish_manifold(result.mesh, result.input_topology, *projector);
+  result.triangles_removed = last.triangles_removed;
+  result.holes_closed = last.closed.holes;
+  result.triangles_closing_holes = last.closed.triangles;
+  result.vertices_closing_holes = last.closed.vertices;
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
   std::vector<bool> corners(result.mesh.vertices.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;

@@ -1,0 +1,20 @@
+#include "remesh/last_step.hpp"
+
+#include "geometry/surface_projector.hpp"
+#include "remesh/make_manifold.hpp"
+
+namespace cvtmesh {
+
+LastStep finish_manifold(TriangleMesh& mesh, const TopologyReport& input,
+                         const SurfaceProjector& surface) {
+  LastStep step;
+  if (!input.is_manifold()) return step;
+  const std::vector<Triangle> removed = make_manifold(mesh, input.orientable);
+  step.triangles_removed = removed.size();
+  if (!removed.empty())
+    step.closed = close_opened_holes(mesh, removed, input, input.orientable,
+                                     [&](const Vec3& p) { return surface.nearest(p).point; });
+  return step;
+}
+
+}  // namespace cvtmesh
