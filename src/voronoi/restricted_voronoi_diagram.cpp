@@ -321,7 +321,7 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
       times.neighbors_reused = true;
     }
   }
-  if (neighbors.ids.empty()) {
+  if (!times.neighbors_reused) {
     neighbors = nearest_neighbors(seeds, *nearest, kStoredNeighbors);
     if (cache) {
       if (!state) state = (*cache = std::make_unique<NeighborCache::State>()).get();
