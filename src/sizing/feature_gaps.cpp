@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 #include "cvtmesh/sizing.hpp"
@@ -139,8 +138,10 @@ std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Featu
       // The direction of the curve through the vertex (one-sided at an end).
       const Vec3 prev = mesh.vertices[!closed && i == 0 ? v : on[(i + n - 1) % n]];
       const Vec3 next = mesh.vertices[!closed && i + 1 == n ? v : on[(i + 1) % n]];
-      const double g = gap_at(mesh.vertices[v], unit_or_zero(next - prev), limit, scratch);
+      const Vec3 tangent = unit_or_zero(next - prev);
       gap[k] = limit;
+      if (dot(tangent, tangent) == 0) continue;  // no direction to face across
+      const double g = gap_at(mesh.vertices[v], tangent, limit, scratch);
       if (!(g < limit)) continue;
       // Probes about a gap further on, both ways, no further than halfway to an end.
       for (const double way : {-1.0, 1.0}) {
