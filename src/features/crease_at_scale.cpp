@@ -7,6 +7,8 @@
 #include <numbers>
 #include <unordered_set>
 
+#include "geometry/median.hpp"
+
 namespace cvtmesh {
 
 namespace {
@@ -99,10 +101,7 @@ double CreaseScale::input_bend_deg(const Edge& edge) const {
   for (std::size_t i = 0; i < slots.size(); ++i)
     if (i == 0 || slots[i].edge != slots[i - 1].edge)
       bends.push_back(dihedral_deg(slots[i].triangle, slots[i].k));
-  if (bends.empty()) return 0;
-  const auto middle = bends.begin() + static_cast<std::ptrdiff_t>(bends.size() / 2);
-  std::nth_element(bends.begin(), middle, bends.end());
-  return *middle;
+  return bends.empty() ? 0 : median_of(std::move(bends));
 }
 
 CreaseScale::Side CreaseScale::side(std::size_t first, bool flip, const Vec3& centre,

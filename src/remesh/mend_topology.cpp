@@ -270,9 +270,10 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   };
   const SpecialEdges special = special_edges(m);
   std::optional<Round> best;
-  // The best of the rounds whose output the last step gives the input's topology: the rounds'
-  // best by defects may not be one (femur.off at 2k: the best round's defects, removed, cut off
-  // a handle; topology lost), and then this one is kept instead (issue 18 item 1: validity).
+  // The best of the rounds without the input's topology whose output the last step gives it
+  // back: the rounds' best by defects may not be one (femur.off at 2k: the best round's defects,
+  // removed, cut off a handle; topology lost), and then this one is kept instead (issue 18 item
+  // 1: validity). A round that keeps the topology is the best anyway: none is copied for it.
   std::optional<Round> best_rescued;
   int since_best = 0;          // rounds since the best was found
   std::size_t last_added = 0;  // seeds the last round added
@@ -293,7 +294,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.
     const std::vector<Index> vertex_seed = output.vertex_seed;
-    if (a.rescued && (!best_rescued || !(a.score < best_rescued->assessment.score)))
+    if (a.rescued && !a.topology_kept &&
+        (!best_rescued || !(a.score < best_rescued->assessment.score)))
       best_rescued = Round{output, seeds, constraints, a, report};
     if (!best || !(a.score < best->assessment.score)) {
       best = Round{std::move(output), seeds, constraints, a, report};

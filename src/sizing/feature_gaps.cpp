@@ -11,6 +11,7 @@
 
 #include "cvtmesh/sizing.hpp"
 #include "features/curve_projector.hpp"
+#include "geometry/median.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -91,11 +92,6 @@ class GapFinder {
   std::vector<std::pair<Vec3, Vec3>> segments_;
   std::optional<PointTree> tree_;
 };
-
-double median_of(std::vector<double> x) {
-  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-  return x[x.size() / 2];
-}
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include <deque>
 
 #include "cvtmesh/rvd.hpp"
+#include "geometry/median.hpp"
 #include "geometry/point_tree.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "system/elapsed.hpp"
@@ -48,11 +49,6 @@ constexpr std::size_t kStoredNeighbors = 12;
 // fraction of a fresh search's: a step of an optimization moves seeds a fraction of their
 // spacing.
 constexpr double kKeptReach = 0.75;
-
-double median_of(std::vector<double> x) {
-  std::nth_element(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2), x.end());
-  return x[x.size() / 2];
-}
 
 using Polygon = std::vector<RvdVertex>;
 
