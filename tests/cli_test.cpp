@@ -107,6 +107,7 @@ TEST(Cli, QualityWithReferenceStatesTheQualityAwayFromNarrowAngles) {
   EXPECT_NEAR(j["narrow_angle_ratio_min"].get<double>(), 0.5, 1e-9);
   EXPECT_GT(j["angle_min_away_deg"].get<double>(), 10);
   EXPECT_LT(j["angle_min_deg"].get<double>(), 10.0 + 1e-9);
+  EXPECT_GT(j["q_min_away"].get<double>(), j["q_min"].get<double>());
 }
 
 TEST(Cli, QualityWithReferenceAddsHausdorffAndTopology) {
@@ -480,6 +481,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "shape_flips",
                           "shape_moves",
                           "angle_min_away_deg",
+                          "q_min_away",
                           "narrow_input_angles",
                           "narrow_angle_ratio_min",
                           "time_s",

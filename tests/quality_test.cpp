@@ -109,11 +109,14 @@ TEST(NarrowAngleQuality, SeparatesTrianglesAtNarrowInputAnglesFromTheRest) {
   EXPECT_EQ(at.narrow_angles, 1u);
   EXPECT_EQ(at.triangles_at, 1u);
   EXPECT_NEAR(at.angle_min_away_deg, 60, 1e-9);
+  EXPECT_NEAR(at.q_min_away, 1, 1e-9);
   EXPECT_NEAR(at.ratio_at_min, 0.5, 1e-9);
   // No narrow angle: every triangle is away, and θmin is the mesh's.
   const NarrowAngleQuality none = measure_away_from(mesh, quality, {});
   EXPECT_EQ(none.triangles_at, 0u);
   EXPECT_NEAR(none.angle_min_away_deg, 10, 1e-9);
+  EXPECT_NEAR(none.q_min_away, quality.q_min, 1e-12);
+  EXPECT_LT(none.q_min_away, 0.5);
   // A narrow angle far from every vertex (more than half an edge): nothing is at it.
   EXPECT_EQ(measure_away_from(mesh, quality, {{{5, 5, 0}, 20}}).triangles_at, 0u);
 }

@@ -41,6 +41,7 @@ struct NarrowAngleQuality {
   // Triangles with a vertex within half the mean edge length of a narrow angle: at it.
   std::size_t triangles_at = 0;
   double angle_min_away_deg = 0;  // θmin over the others (over all, when none is at one)
+  double q_min_away = 0;          // Qmin over the same triangles
   double ratio_at_min = 0;  // over those at one: smallest angle / the input angle; 0 when none
 };
 // `quality`: measure_quality(mesh), which callers have already.

@@ -13,6 +13,7 @@ NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityRepo
   NarrowAngleQuality out;
   out.narrow_angles = narrow.size();
   out.angle_min_away_deg = quality.angle_min_deg;
+  out.q_min_away = quality.q_min;
   if (narrow.empty() || mesh.triangles.empty()) return out;
   // A vertex within half an edge of a narrow angle stands for it: exactly there in an output
   // that keeps its corners, the nearest vertex in one that does not.
@@ -25,21 +26,24 @@ NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityRepo
     for (Index v : near)
       angle_at[v] = angle_at[v] == 0 ? a.angle_deg : std::min(angle_at[v], a.angle_deg);
   }
-  double away = 180, ratio = std::numeric_limits<double>::infinity();
+  double away = 180, q_away = 1, ratio = std::numeric_limits<double>::infinity();
   for (const Triangle& t : mesh.triangles) {
-    const double theta =
-        triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]).min_angle;
+    const TriangleShape shape =
+        triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+    const double theta = shape.min_angle;
     double input = 0;
     for (Index v : t)
       if (angle_at[v] > 0) input = input == 0 ? angle_at[v] : std::min(input, angle_at[v]);
     if (input == 0) {
       away = std::min(away, theta);
+      q_away = std::min(q_away, shape.quality);
     } else {
       ++out.triangles_at;
       ratio = std::min(ratio, theta / input);
     }
   }
   out.angle_min_away_deg = away;
+  out.q_min_away = q_away;
   out.ratio_at_min = out.triangles_at > 0 ? ratio : 0;
   return out;
 }

@@ -90,6 +90,7 @@ void add_narrow_angle_json(nlohmann::ordered_json& j, const NarrowAngleQuality& 
   j["narrow_input_angles"] = n.narrow_angles;
   j["triangles_at_narrow_angles"] = n.triangles_at;
   j["angle_min_away_deg"] = n.angle_min_away_deg;
+  j["q_min_away"] = n.q_min_away;
   j["narrow_angle_ratio_min"] =
       n.triangles_at > 0 ? nlohmann::ordered_json(n.ratio_at_min) : nlohmann::ordered_json(nullptr);
 }
@@ -97,10 +98,11 @@ void add_narrow_angle_json(nlohmann::ordered_json& j, const NarrowAngleQuality& 
 std::string narrow_angle_line(const NarrowAngleQuality& n) {
   if (n.narrow_angles == 0) return "";
   return fmt::format(
-      "  narrow    {} input angle{} under {:.0f}° between features: θmin {:.2f}° away from them; "
-      "at them ({} triangles) the smallest angle is at least {:.2f} × the input angle\n",
+      "  narrow    {} input angle{} under {:.0f}° between features: θmin {:.2f}°, Qmin {:.3f} "
+      "away from them; at them ({} triangles) the smallest angle is at least {:.2f} × the input "
+      "angle\n",
       n.narrow_angles, n.narrow_angles == 1 ? "" : "s", kNarrowAngleDeg, n.angle_min_away_deg,
-      n.triangles_at, n.ratio_at_min);
+      n.q_min_away, n.triangles_at, n.ratio_at_min);
 }
 
 }  // namespace
