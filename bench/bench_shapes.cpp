@@ -5,12 +5,17 @@
 //     by up to J% of the unit sphere's radius along it (edges are about 8% long), improved on an
 //     icosphere of level 6; counters shapes_s, projections_s (every vertex once),
 //     shapes_over_projections, flips, moves, and Qmin and θmin before and after.
+//   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
+//     rounds (remesh/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
+//     Hausdorff mean before and after (% of the radius).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 
+#include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
 #include "geometry/surface_projector.hpp"
+#include "remesh/fit_surface.hpp"
 #include "remesh/improve_shapes.hpp"
 #include "support/shapes.hpp"
 
@@ -20,6 +25,15 @@ using namespace cvtmesh;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The baseline: each of `points` projected onto `surface` once.
+double seconds_to_project(const SurfaceProjector& surface, const std::vector<Vec3>& points) {
+  const auto start = std::chrono::steady_clock::now();
+  double sum = 0;
+  for (const Vec3& v : points) sum += surface.nearest(v).point.x;
+  benchmark::DoNotOptimize(sum);
+  return seconds_since(start);
 }
 
 void BM_ImproveShapes(benchmark::State& state) {
@@ -33,11 +47,7 @@ void BM_ImproveShapes(benchmark::State& state) {
     const auto shapes_start = std::chrono::steady_clock::now();
     const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, {}, 5);
     const double shapes_s = seconds_since(shapes_start);
-    const auto projections_start = std::chrono::steady_clock::now();
-    double sum = 0;
-    for (const Vec3& v : start.vertices) sum += surface.nearest(v).point.x;
-    benchmark::DoNotOptimize(sum);
-    const double projections_s = seconds_since(projections_start);
+    const double projections_s = seconds_to_project(surface, start.vertices);
     state.SetIterationTime(shapes_s);
     const QualityReport after = measure_quality(mesh);
     state.counters["shapes_s"] = shapes_s;
@@ -52,5 +62,28 @@ void BM_ImproveShapes(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ImproveShapes)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_FitSurface(benchmark::State& state) {
+  const TriangleMesh fine = testing::icosphere(6);
+  const SurfaceProjector surface(fine);
+  TriangleMesh start = testing::icosphere(4);
+  for (Vec3& v : start.vertices) v = surface.nearest(v).point;
+  const std::vector<bool> movable(start.vertices.size(), true);
+  const double mean_before = hausdorff_distance(start, fine).mean;
+  for (auto _ : state) {
+    TriangleMesh mesh = start;
+    const auto fit_start = std::chrono::steady_clock::now();
+    fit_to_surface(mesh, surface, movable, static_cast<int>(state.range(0)));
+    const double fit_s = seconds_since(fit_start);
+    const double projections_s = seconds_to_project(surface, start.vertices);
+    state.SetIterationTime(fit_s);
+    state.counters["fit_s"] = fit_s;
+    state.counters["projections_s"] = projections_s;
+    state.counters["fit_over_projections"] = fit_s / projections_s;
+    state.counters["hd_mean_before_pct"] = 100 * mean_before;
+    state.counters["hd_mean_after_pct"] = 100 * hausdorff_distance(mesh, fine).mean;
+  }
+}
+BENCHMARK(BM_FitSurface)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -480,6 +480,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "mend_rounds",
                           "shape_flips",
                           "shape_moves",
+                          "vertices_fitted",
                           "angle_min_away_deg",
                           "q_min_away",
                           "narrow_input_angles",

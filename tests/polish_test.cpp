@@ -21,9 +21,11 @@ struct Defect {
   Vec3 at;
 };
 
+// Vertices stay on the surface (no fit), so that an output's vertices are seeds on it.
 RemeshSettings featureless() {
   RemeshSettings s;
   s.features.sharp_edges = false;
+  s.fit_rounds = 0;
   return s;
 }
 

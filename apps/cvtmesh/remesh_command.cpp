@@ -176,6 +176,12 @@ void add_remesh_command(CLI::App& app, Action& run) {
                   "triangles, last (0: none)")
       ->default_val(5)
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--fit-rounds", o->settings.fit_rounds,
+                  "Rounds of moving surface vertices along their normals so that the input lies "
+                  "between them and their triangles' middles, last; never lowers θmin or Qmin "
+                  "(0: vertices stay on the input)")
+      ->default_val(1)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,
                   "Rounds of topology control: seeds added where the output misses feature "
                   "edges or differs in topology; the best round is kept; up to three times as "

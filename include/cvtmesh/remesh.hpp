@@ -56,6 +56,9 @@ struct RemeshSettings {
   // Sweeps of edge flips and vertex moves around the output's badly shaped triangles, the last
   // step (see RemeshResult::shape_flips); 0 turns it off.
   int shape_sweeps = 5;
+  // Rounds of fitting the output to the input, last (see RemeshResult::vertices_fitted); 0 keeps
+  // every vertex on the input surface.
+  int fit_rounds = 1;
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
   // The best output of all the rounds is kept; they stop early after 4 rounds in a row that
@@ -143,6 +146,10 @@ struct RemeshResult {
   // where the worst triangle it touches gets better. Neither changes the topology; feature,
   // corner and boundary vertices do not move, feature edges do not flip.
   std::size_t shape_flips = 0, shape_moves = 0;
+  // Surface vertices moved off the input along their normals, last of all, so that the input lies
+  // between them and their triangles' middles (remesh/fit_surface): the chords of a curved
+  // surface all fall inside convex parts otherwise. Never where θmin or Qmin would fall.
+  std::size_t vertices_fitted = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it
   EdgeLengthRatio edge_length_ratio;
   bool time_limit_reached = false;  // RemeshSettings::time_limit stopped the work early

@@ -70,9 +70,10 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
                  std::optional<double> edge_length, std::optional<double> edge_length_rel,
                  const py::object& seeds, const std::optional<std::string>& seeds_file,
                  int iterations, std::size_t samples, bool no_hausdorff, int polish_rounds,
-                 int shape_sweeps, int topology_rounds, const std::string& optimizer,
-                 const std::string& mode, std::uint64_t seed, std::optional<double> feature_angle,
-                 bool no_features, const py::object& feature_edges, std::optional<double> adaptive,
+                 int shape_sweeps, int fit_rounds, int topology_rounds,
+                 const std::string& optimizer, const std::string& mode, std::uint64_t seed,
+                 std::optional<double> feature_angle, bool no_features,
+                 const py::object& feature_edges, std::optional<double> adaptive,
                  const py::object& sizing, double min_edge_length, double max_edge_length,
                  double time_limit, bool quiet, int threads,
                  const std::function<void(const RemeshProgress&)>& progress) {
@@ -119,6 +120,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
   s.iterations = iterations;
   s.polish_rounds = polish_rounds;
   s.shape_sweeps = shape_sweeps;
+  s.fit_rounds = fit_rounds;
   s.topology_rounds = topology_rounds;
   s.optimizer = optimizer_named(optimizer);
   s.mode = mode_named(mode);
@@ -190,7 +192,11 @@ polish_rounds : int, default 3
     Rounds of local Lloyd steps around badly shaped triangles (0: none).
 shape_sweeps : int, default 5
     Sweeps of edge flips and vertex moves along the surface around badly shaped triangles,
-    the last step (0: none).
+    the last step but one (0: none).
+fit_rounds : int, default 1
+    Rounds of moving surface vertices along their normals so that the input lies between them
+    and their triangles' middles, last; never lowers θmin or Qmin (0: vertices stay on the
+    input).
 topology_rounds : int, default 12
     Rounds of topology control: seeds added where the output misses feature edges or
     differs in topology; the best round is kept (0: none).
@@ -257,21 +263,21 @@ void add_remesh(py::module_& m) {
                ", energy=" + std::to_string(p.energy) + ")";
       });
   const RemeshSettings defaults;  // the library's defaults are the module's
-  m.def("remesh", &remesh, kRemeshDoc, py::arg("V"), py::arg("F"), py::arg("vertices") = py::none(),
-        py::arg("edge_length") = py::none(), py::kw_only(), py::arg("edge_length_rel") = py::none(),
-        py::arg("seeds") = py::none(), py::arg("seeds_file") = py::none(),
-        py::arg("iterations") = defaults.iterations, py::arg("samples") = kRemeshReportSamples,
-        py::arg("no_hausdorff") = false, py::arg("polish_rounds") = defaults.polish_rounds,
-        py::arg("shape_sweeps") = defaults.shape_sweeps,
-        py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
-        py::arg("mode") = "both", py::arg("seed") = defaults.seed,
-        py::arg("feature_angle") = py::none(), py::arg("no_features") = false,
-        py::arg("feature_edges") = py::none(), py::arg("adaptive") = py::none(),
-        py::arg("sizing") = py::none(),
-        py::arg("min_edge_length") = defaults.sizing.min_edge_length,
-        py::arg("max_edge_length") = defaults.sizing.max_edge_length,
-        py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true,
-        py::arg("threads") = 0, py::arg("progress") = nullptr);
+  m.def(
+      "remesh", &remesh, kRemeshDoc, py::arg("V"), py::arg("F"), py::arg("vertices") = py::none(),
+      py::arg("edge_length") = py::none(), py::kw_only(), py::arg("edge_length_rel") = py::none(),
+      py::arg("seeds") = py::none(), py::arg("seeds_file") = py::none(),
+      py::arg("iterations") = defaults.iterations, py::arg("samples") = kRemeshReportSamples,
+      py::arg("no_hausdorff") = false, py::arg("polish_rounds") = defaults.polish_rounds,
+      py::arg("shape_sweeps") = defaults.shape_sweeps, py::arg("fit_rounds") = defaults.fit_rounds,
+      py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
+      py::arg("mode") = "both", py::arg("seed") = defaults.seed,
+      py::arg("feature_angle") = py::none(), py::arg("no_features") = false,
+      py::arg("feature_edges") = py::none(), py::arg("adaptive") = py::none(),
+      py::arg("sizing") = py::none(), py::arg("min_edge_length") = defaults.sizing.min_edge_length,
+      py::arg("max_edge_length") = defaults.sizing.max_edge_length,
+      py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true, py::arg("threads") = 0,
+      py::arg("progress") = nullptr);
 }
 
 }  // namespace cvtmesh::python

@@ -21,6 +21,7 @@
 #include "geometry/area_sampler.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
+#include "remesh/fit_surface.hpp"
 #include "remesh/flat_ears.hpp"
 #include "remesh/improve_shapes.hpp"
 #include "remesh/last_step.hpp"
@@ -101,13 +102,29 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
 }
 
 // Drops the vertices no triangle uses (repair_mesh), and renumbers the rest in `r`'s vertices
-// added and feature edges.
-void drop_unused_vertices(RemeshResult& r) {
+// added and feature edges, and in `flags` (per vertex).
+void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
   std::vector<Index> new_id;
   repair_mesh(r.mesh, &new_id);
   std::erase_if(r.vertices_added, [&](Index v) { return new_id[v] == kRemovedVertex; });
   for (Index& v : r.vertices_added) v = new_id[v];
   r.feature_edges = edges_after_repair(r.feature_edges, new_id);
+  std::vector<bool> kept(r.mesh.vertices.size(), false);
+  for (std::size_t v = 0; v < new_id.size(); ++v)
+    if (new_id[v] != kRemovedVertex) kept[new_id[v]] = flags[v];
+  flags = std::move(kept);
+}
+
+// The vertices the surface fit may move: surface vertices (not on a feature curve or at a
+// corner) off the output's boundary.
+std::vector<bool> off_boundary(const TriangleMesh& mesh, std::vector<bool> surface_vertices) {
+  std::map<Edge, int> uses;
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++uses[{std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3])}];
+  for (const auto& [e, n] : uses)
+    if (n != 2) surface_vertices[e[0]] = surface_vertices[e[1]] = false;
+  return surface_vertices;
 }
 
 // One output size at most; none only for initial seeds (their count is the size) or target
@@ -343,7 +360,11 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   for (const VertexSupport& s : supports)
     removable.push_back(s.kind == VertexSupport::Kind::surface);
   result.valence_three_removed = remove_valence_three(result.mesh, removable, *projector);
-  if (result.valence_three_removed > 0) drop_unused_vertices(result);
+  if (result.valence_three_removed > 0) drop_unused_vertices(result, removable);
+  const SurfaceFit fit =
+      fit_to_surface(result.mesh, *projector, off_boundary(result.mesh, std::move(removable)),
+                     settings.fit_rounds);
+  result.vertices_fitted = fit.vertices_moved;
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);

@@ -1,0 +1,185 @@
+#include "remesh/fit_surface.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "cvtmesh/quality.hpp"
+#include "geometry/surface_projector.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// A move is at most this fraction of the vertex's shortest edge: the chord's sag is an eighth of
+// an edge where the curvature radius is the edge length, and a larger move could reach across a
+// part thinner than that.
+constexpr double kMaxMove = 0.1;
+// A triangle may turn this far at most (cosine): a fit shifts, it does not fold.
+constexpr double kMinTurnCos = 0.906;  // 25°
+
+// The points of a triangle whose distances the fit weighs: its corners, edge midpoints and
+// centroid, with the weights of the 7-point rule exact for quadratics (1/20, 2/15 and 9/20 of the
+// area). A midpoint's projection serves both triangles of its edge.
+constexpr double kCornerWeight = 1.0 / 20, kMidpointWeight = 2.0 / 15, kCentroidWeight = 9.0 / 20;
+
+// Each triangle's sides as ids of the mesh's edges, and each edge's two vertices.
+struct EdgeIds {
+  std::vector<std::array<std::size_t, 3>> side;  // side k runs from corner k to corner k+1
+  std::vector<Edge> ends;
+};
+
+EdgeIds edge_ids(const TriangleMesh& mesh) {
+  std::vector<std::pair<Edge, std::size_t>> sides;  // (edge, 3·triangle + side)
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Index a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
+      sides.push_back({{std::min(a, b), std::max(a, b)}, 3 * t + k});
+    }
+  std::sort(sides.begin(), sides.end());
+  EdgeIds ids;
+  ids.side.resize(mesh.triangles.size());
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    if (i == 0 || sides[i].first != sides[i - 1].first) ids.ends.push_back(sides[i].first);
+    ids.side[sides[i].second / 3][sides[i].second % 3] = ids.ends.size() - 1;
+  }
+  return ids;
+}
+
+Vec3 unit(const Vec3& v) {
+  const double n = norm(v);
+  return n > 0 ? (1 / n) * v : Vec3{0, 0, 0};
+}
+
+std::vector<Vec3> vertex_normals(const TriangleMesh& mesh) {
+  std::vector<Vec3> n(mesh.vertices.size(), Vec3{0, 0, 0});
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const Vec3 area2 = cross(b - a, c - a);  // area-weighted
+    for (const Index v : mesh.triangles[t]) n[v] += area2;
+  }
+  for (Vec3& x : n) x = unit(x);
+  return n;
+}
+
+// Per vertex, the weighted mean distance along its normal from its triangles' sample points to
+// their nearest surface points (0 where the vertex is not movable).
+std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
+                                 const SurfaceProjector& surface, const std::vector<bool>& movable,
+                                 const std::vector<Vec3>& normal) {
+  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
+  const auto& x = mesh.vertices;
+  std::vector<SurfaceProjector::Foot> foot(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { foot[v] = surface.nearest(x[v]); });
+  // From each edge midpoint and centroid to its nearest surface point.
+  std::vector<Vec3> to_midpoint(edges.ends.size()), to_centroid(nt);
+  tbb::parallel_for(std::size_t{0}, edges.ends.size(), [&](std::size_t e) {
+    const auto [a, b] = edges.ends[e];
+    const Vec3 p = 0.5 * (x[a] + x[b]);
+    to_midpoint[e] = surface.nearest(p, foot[a]).point - p;
+  });
+  tbb::parallel_for(std::size_t{0}, nt, [&](std::size_t t) {
+    const auto c = mesh.corners(t);
+    const Vec3 p = (1.0 / 3) * (c[0] + c[1] + c[2]);
+    to_centroid[t] = surface.nearest(p, foot[mesh.triangles[t][0]]).point - p;
+  });
+  std::vector<double> sum(nv, 0), weight(nv, 0);
+  for (std::size_t t = 0; t < nt; ++t) {  // in order: the sums do not depend on the threads
+    const auto [a, b, c] = mesh.corners(t);
+    const double area = 0.5 * norm(cross(b - a, c - a));
+    const Triangle& f = mesh.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const Index v = f[i];
+      if (!movable[v]) continue;
+      // The vertex itself (barycentric weight 1), the midpoints of its two sides in t (1/2),
+      // the centroid (1/3).
+      const Vec3& n = normal[v];
+      const std::size_t after = edges.side[t][i], before = edges.side[t][(i + 2) % 3];
+      sum[v] += area * (kCornerWeight * dot(foot[v].point - x[v], n) +
+                        kMidpointWeight / 2 * dot(to_midpoint[after] + to_midpoint[before], n) +
+                        kCentroidWeight / 3 * dot(to_centroid[t], n));
+      weight[v] += area * (kCornerWeight + kMidpointWeight + kCentroidWeight / 3);
+    }
+  }
+  std::vector<double> offset(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
+    if (weight[v] > 0) offset[v] = sum[v] / weight[v];
+  return offset;
+}
+
+// Whether triangle t, as it is now, stays above the floors and turned less than kMinTurnCos
+// from `before` (its unit normal before the round).
+bool acceptable(const TriangleMesh& mesh, std::size_t t, const Vec3& before, double angle_floor,
+                double q_floor) {
+  const auto [a, b, c] = mesh.corners(t);
+  const TriangleShape s = triangle_shape(a, b, c);
+  return s.min_angle >= angle_floor && s.quality >= q_floor &&
+         dot(unit(cross(b - a, c - a)), before) >= kMinTurnCos;
+}
+
+}  // namespace
+
+SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
+                          const std::vector<bool>& movable, int rounds) {
+  SurfaceFit fit;
+  if (mesh.triangles.empty() || rounds <= 0) return fit;
+  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
+  double angle_floor = 180, q_floor = 1;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const TriangleShape s = triangle_shape(a, b, c);
+    angle_floor = std::min(angle_floor, s.min_angle);
+    q_floor = std::min(q_floor, s.quality);
+  }
+  std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
+  for (const Triangle& f : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const double l = distance(mesh.vertices[f[i]], mesh.vertices[f[(i + 1) % 3]]);
+      reach[f[i]] = std::min(reach[f[i]], kMaxMove * l);
+      reach[f[(i + 1) % 3]] = std::min(reach[f[(i + 1) % 3]], kMaxMove * l);
+    }
+  const std::vector<Vec3> start = mesh.vertices;
+  const EdgeIds edges = edge_ids(mesh);
+  for (int round = 0; round < rounds; ++round) {
+    const std::vector<Vec3> normal = vertex_normals(mesh);
+    std::vector<Vec3> face_normal(nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+      const auto [a, b, c] = mesh.corners(t);
+      face_normal[t] = unit(cross(b - a, c - a));
+    }
+    const std::vector<double> offset = mean_offsets(mesh, edges, surface, movable, normal);
+    const std::vector<Vec3> before = mesh.vertices;
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (!movable[v] || offset[v] == 0) continue;
+      // Along the normal, within the reach of where the vertex started.
+      const Vec3 to = before[v] + offset[v] * normal[v];
+      const Vec3 moved = to - start[v];
+      const double length = norm(moved);
+      mesh.vertices[v] = length > reach[v] ? start[v] + (reach[v] / length) * moved : to;
+    }
+    // Undo the moves at triangles that got worse than the floors, until none does: undoing all
+    // gives back the round's start, which passed.
+    for (bool undone = true; undone;) {
+      undone = false;
+      for (std::size_t t = 0; t < nt; ++t) {
+        if (acceptable(mesh, t, face_normal[t], angle_floor, q_floor)) continue;
+        for (const Index v : mesh.triangles[t])
+          if (mesh.vertices[v] != before[v]) {
+            mesh.vertices[v] = before[v];
+            undone = true;
+          }
+      }
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (mesh.vertices[v] != start[v]) {
+      ++fit.vertices_moved;
+      fit.offset_max = std::max(fit.offset_max, distance(mesh.vertices[v], start[v]));
+    }
+  return fit;
+}
+
+}  // namespace cvtmesh

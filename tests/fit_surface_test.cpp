@@ -1,0 +1,119 @@
+// Fitting the output to the input (remesh/fit_surface): chords of a curved surface move so that
+// the surface lies between vertices and triangle middles, flat parts and pinned vertices stay,
+// and θmin and Qmin never fall.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <cmath>
+
+#include "cvtmesh/hausdorff.hpp"
+#include "cvtmesh/quality.hpp"
+#include "cvtmesh/remesh.hpp"
+#include "cvtmesh/topology.hpp"
+#include "geometry/surface_projector.hpp"
+#include "remesh/fit_surface.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+std::vector<bool> all(const TriangleMesh& m) {
+  return std::vector<bool>(m.vertices.size(), true);
+}
+
+// A coarse icosphere (edges about a third of the radius) against a fine one: every vertex on the
+// sphere, every chord inside it, until the fit moves the vertices out.
+TEST(FitSurface, HalvesTheMeanDistanceOfACoarseSphere) {
+  const TriangleMesh fine = testing::icosphere(6);
+  TriangleMesh coarse = testing::icosphere(2);
+  const SurfaceProjector surface(fine);
+  for (Vec3& v : coarse.vertices) v = surface.nearest(v).point;
+  const TriangleMesh before = coarse;
+  const HausdorffReport d0 = hausdorff_distance(coarse, fine);
+  const QualityReport q0 = measure_quality(coarse);
+  const SurfaceFit fit = fit_to_surface(coarse, surface, all(coarse), 2);
+  const HausdorffReport d1 = hausdorff_distance(coarse, fine);
+  const QualityReport q1 = measure_quality(coarse);
+  EXPECT_EQ(fit.vertices_moved, coarse.vertices.size());
+  EXPECT_LT(d1.mean, 0.5 * d0.mean);
+  EXPECT_LT(d1.max, d0.max);
+  EXPECT_GE(q1.angle_min_deg, q0.angle_min_deg);
+  EXPECT_GE(q1.q_min, q0.q_min);
+  EXPECT_EQ(coarse.triangles, before.triangles);
+  // Outwards, by less than the chords' sag (a level-2 icosphere's is about 1.5% of the radius).
+  for (const Vec3& v : coarse.vertices) {
+    EXPECT_GT(norm(v), 1.0);
+    EXPECT_LT(norm(v), 1.015);
+  }
+}
+
+TEST(FitSurface, LeavesFlatPartsAndPinnedVerticesWhereTheyAre) {
+  const TriangleMesh disk = testing::disk(6, 16);
+  TriangleMesh copy = disk;
+  const SurfaceProjector surface(disk);
+  const SurfaceFit flat = fit_to_surface(copy, surface, all(copy), 2);
+  EXPECT_LT(flat.offset_max, 1e-12);
+
+  const TriangleMesh fine = testing::icosphere(5);
+  TriangleMesh coarse = testing::icosphere(2);
+  const SurfaceProjector sphere(fine);
+  for (Vec3& v : coarse.vertices) v = sphere.nearest(v).point;
+  const TriangleMesh before = coarse;
+  std::vector<bool> movable = all(coarse);
+  for (std::size_t v = 0; v < movable.size(); v += 3) movable[v] = false;
+  fit_to_surface(coarse, sphere, movable, 2);
+  for (std::size_t v = 0; v < movable.size(); ++v) {
+    if (!movable[v]) {
+      EXPECT_EQ(coarse.vertices[v], before.vertices[v]);
+    }
+  }
+}
+
+// A badly shaped triangle sets the floors: the fit may not make the mesh's worst triangle worse,
+// and the result is the same on one thread as on all.
+TEST(FitSurface, NeverLowersTheWorstTriangleAndDoesNotDependOnTheThreads) {
+  const TriangleMesh fine = testing::torus(1, 0.4, 96, 48);
+  TriangleMesh coarse = testing::torus(1, 0.4, 12, 6);
+  const SurfaceProjector surface(fine);
+  coarse.vertices[5] = coarse.vertices[5] + 0.6 * (coarse.vertices[6] - coarse.vertices[5]);
+  for (Vec3& v : coarse.vertices) v = surface.nearest(v).point;
+  const QualityReport q0 = measure_quality(coarse);
+  TriangleMesh one = coarse;
+  {
+    tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    fit_to_surface(one, surface, all(one), 2);
+  }
+  fit_to_surface(coarse, surface, all(coarse), 2);
+  EXPECT_EQ(one.vertices, coarse.vertices);
+  const QualityReport q1 = measure_quality(coarse);
+  EXPECT_GE(q1.angle_min_deg, q0.angle_min_deg);
+  EXPECT_GE(q1.q_min, q0.q_min);
+}
+
+// In a remesh, last: the mean distance to a torus falls by a third or more, the worst triangle
+// does not get worse, the topology stays. On a cube, whose output lies in its faces and along its
+// creases, nothing moves.
+TEST(FitSurface, RemeshEndsWithItAndReportsIt) {
+  const TriangleMesh torus = testing::torus(1, 0.35, 120, 48);
+  RemeshSettings s;
+  s.vertices = 600;
+  s.fit_rounds = 0;
+  const RemeshResult on_surface = remesh(torus, s);
+  s.fit_rounds = RemeshSettings{}.fit_rounds;
+  const RemeshResult fitted = remesh(torus, s);
+  EXPECT_EQ(on_surface.vertices_fitted, 0u);
+  EXPECT_GT(fitted.vertices_fitted, 500u);
+  EXPECT_LT(hausdorff_distance(fitted.mesh, torus).mean,
+            0.67 * hausdorff_distance(on_surface.mesh, torus).mean);
+  const QualityReport q0 = measure_quality(on_surface.mesh), q1 = measure_quality(fitted.mesh);
+  EXPECT_GE(q1.angle_min_deg, q0.angle_min_deg);
+  EXPECT_GE(q1.q_min, q0.q_min);
+  EXPECT_TRUE(same_topology(analyze_topology(fitted.mesh), analyze_topology(torus)));
+
+  const TriangleMesh cube = testing::cube(4);
+  const RemeshResult box = remesh(cube, s);
+  EXPECT_EQ(box.vertices_fitted, 0u);
+}
+
+}  // namespace
+}  // namespace cvtmesh
