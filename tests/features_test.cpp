@@ -207,13 +207,14 @@ TEST(Features, FoldsOfALowPolyModelAreNoCreasesAtAFinerScaleButAPolyhedronsAre) 
   EXPECT_EQ(detect_features(testing::cube(2), s).curves.size(), 12u);
 }
 
-// A cube (side 2, 8 grid cells a side) with a ridge on its top face: 5 grid vertices in a row
-// raised by a grid cell. The ridge folds by 90° and, with a grid diagonal at each end, is 1.87
-// long; it ends in the flat face, meeting no other feature.
-TriangleMesh cube_with_ridge() {
-  TriangleMesh m = testing::cube(8);
+// A cube (side 2, n grid cells a side) with a ridge on its top face: 5 grid vertices in a row
+// raised by a grid cell. The ridge folds by 90° and, with a grid diagonal at each end, is 7.5 grid
+// cells long (1.87 for n = 8); it ends in the flat face, meeting no other feature.
+TriangleMesh cube_with_ridge(int n = 8) {
+  TriangleMesh m = testing::cube(n);
+  const double cell = 2.0 / n;
   for (Vec3& p : m.vertices)
-    if (p.z == 1 && p.y == 0 && std::abs(p.x) < 0.51) p.z += 0.25;
+    if (p.z == 1 && p.y == 0 && std::abs(p.x) < 2.01 * cell) p.z += cell;
   return m;
 }
 
@@ -226,6 +227,24 @@ TEST(Features, ShortCreasesFreeAtBothEndsAreDroppedUnlessForced) {
   s.scale = 0.25;
   s.creases_at_scale = false;  // a feature angle given: every curve of its length is kept
   EXPECT_EQ(detect_features(cube_with_ridge(), s).curves.size(), 13u);
+}
+
+// However fine the scale, a free crease under a third of its model across (the square root of
+// its component's area, 4.9 for the cube) is a fold of an organic model's polygons, not a designed
+// feature: a ridge of 0.94 on the same cube, at a scale it is 9.4 times as long as, goes; forced,
+// it stays. The ridge of 1.87 above is over a third: kept.
+TEST(Features, FreeCreasesShortAgainstTheirModelAreDroppedAtAnyScale) {
+  FeatureSettings s;
+  s.scale = 0.1;
+  EXPECT_EQ(detect_features(cube_with_ridge(16), s).curves.size(), 12u);
+  s.creases_at_scale = false;
+  EXPECT_EQ(detect_features(cube_with_ridge(16), s).curves.size(), 13u);
+  // Beside a far larger component the ridge's model is still its own cube.
+  s.creases_at_scale = true;
+  s.scale = 0.2;
+  const TriangleMesh two = testing::concatenate(
+      cube_with_ridge(), testing::transformed(testing::cube(8), 20, {100, 0, 0}));
+  EXPECT_EQ(detect_features(two, s).curves.size(), 25u);
 }
 
 // A cube (side 2, 32 grid cells a side) whose top face steps up by `rise` past x = 1/16: the

@@ -27,8 +27,9 @@ struct FeatureSettings {
   // the input around the curves they are connected to bends at its own resolution (the median
   // dihedral angle of the other edges there is over a tenth of `angle_deg` along most of them:
   // the folds of a low-poly organic model, flat-sided at a finer scale), or when free at both
-  // ends (meeting no other feature) and shorter than 8 times it (a fold of an organic model's
-  // polygons; CAD creases end where they meet other creases), or when another
+  // ends (meeting no other feature) and shorter than 8 times it or than a third of the square
+  // root of its component's area (a fold of an organic model's polygons; CAD creases end where
+  // they meet other creases), or when another
   // curve joins the same two corners within half of it all along (twins: one is kept, the
   // shorter). With `creases_at_scale`, a sharp turn is a corner only where both its curves are
   // at least 0.3 times it long (the jagged rim of a scan's hole), or where all the curves it is

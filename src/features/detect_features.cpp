@@ -175,6 +175,12 @@ void chain(const TriangleMesh& mesh, double cos_threshold, double scale,
 // 10 long, whose tracing cost angles (issue 18 item 5: bull.off at 5k 29° against 34° without
 // features, plane_holes.obj Qmin 0.41 against 0.52, triceratops.off at 1k 16° against 23°).
 constexpr double kFreeCreaseLengths = 8;
+// And, whatever the output's scale, at least this fraction of the square root of its component's
+// area: a free crease a third of the model across is a designed feature; the folds of an organic
+// model's polygons that pass at fine scales are shorter (0.10-0.28 of it: cactus, lion-head,
+// triceratops, demosthenes and scorpion at 5k and 10k, each then worse in θmin or Qmin than
+// without features; the free creases of CAD parts: fandisk at 1k 0.43, couplingdown 1.09).
+constexpr double kFreeCreaseOfModel = 1.0 / 3;
 
 }  // namespace
 
@@ -237,12 +243,26 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     };
     std::vector<double> lengths;
     for (const FeatureCurve& c : f.curves) lengths.push_back(curve_length(mesh, c));
+    // The model a free crease belongs to: its connected component, whose area's square root
+    // measures it.
+    UnionFind parts(mesh.vertices.size());
+    for (const Triangle& t : mesh.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
+    std::vector<double> part_area(mesh.vertices.size(), 0);
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto [p, q, r] = mesh.corners(t);
+      part_area[parts.find(mesh.triangles[t][0])] += triangle_area(p, q, r);
+    }
+    const auto model_size = [&](const FeatureCurve& c) {
+      return std::sqrt(part_area[parts.find(c.vertices.front())]);
+    };
     auto feature_at_scale = [&](std::size_t c) {
       const double length = lengths[c];
       if (length < 2 * settings.scale) return false;
-      return !settings.creases_at_scale ||
-             ((!free_ends(f.curves[c]) || length >= kFreeCreaseLengths * settings.scale) &&
-              creases.is_crease(f.curves[c], settings.scale, settings.angle_deg));
+      if (!settings.creases_at_scale) return true;
+      const bool long_if_free =
+          !free_ends(f.curves[c]) || (length >= kFreeCreaseLengths * settings.scale &&
+                                      length >= kFreeCreaseOfModel * model_size(f.curves[c]));
+      return long_if_free && creases.is_crease(f.curves[c], settings.scale, settings.angle_deg);
     };
     const auto edges_of = [](const FeatureCurve& c) {
       std::vector<Edge> edges;
