@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "cvtmesh/quality.hpp"
+#include "features/edge_uses.hpp"
 #include "geometry/surface_projector.hpp"
 
 namespace cvtmesh {
@@ -26,26 +27,28 @@ constexpr double kMinTurnCos = 0.906;  // 25°
 // area). A midpoint's projection serves both triangles of its edge.
 constexpr double kCornerWeight = 1.0 / 20, kMidpointWeight = 2.0 / 15, kCentroidWeight = 9.0 / 20;
 
-// Each triangle's sides as ids of the mesh's edges, and each edge's two vertices.
+// Each triangle's sides as ids of the mesh's edges, each edge's two vertices, and whether it has
+// other than two triangles (a boundary or non-manifold edge).
 struct EdgeIds {
   std::vector<std::array<std::size_t, 3>> side;  // side k runs from corner k to corner k+1
   std::vector<Edge> ends;
+  std::vector<bool> not_interior;
 };
 
 EdgeIds edge_ids(const TriangleMesh& mesh) {
-  std::vector<std::pair<Edge, std::size_t>> sides;  // (edge, 3·triangle + side)
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const Index a = mesh.triangles[t][k], b = mesh.triangles[t][(k + 1) % 3];
-      sides.push_back({{std::min(a, b), std::max(a, b)}, 3 * t + k});
-    }
-  std::sort(sides.begin(), sides.end());
+  const std::vector<EdgeUse> uses = edge_uses(mesh);  // sorted by edge
   EdgeIds ids;
   ids.side.resize(mesh.triangles.size());
-  for (std::size_t i = 0; i < sides.size(); ++i) {
-    if (i == 0 || sides[i].first != sides[i - 1].first) ids.ends.push_back(sides[i].first);
-    ids.side[sides[i].second / 3][sides[i].second % 3] = ids.ends.size() - 1;
+  std::vector<int> count;
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    if (i == 0 || uses[i].edge != uses[i - 1].edge) {
+      ids.ends.push_back(uses[i].edge);
+      count.push_back(0);
+    }
+    ++count.back();
+    ids.side[uses[i].triangle()][uses[i].corner % 3] = ids.ends.size() - 1;
   }
+  for (const int n : count) ids.not_interior.push_back(n != 2);
   return ids;
 }
 
@@ -123,9 +126,12 @@ bool acceptable(const TriangleMesh& mesh, std::size_t t, const Vec3& before, dou
 }  // namespace
 
 SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
-                          const std::vector<bool>& movable, int rounds) {
+                          std::vector<bool> movable, int rounds) {
   SurfaceFit fit;
   if (mesh.triangles.empty() || rounds <= 0) return fit;
+  const EdgeIds edges = edge_ids(mesh);
+  for (std::size_t e = 0; e < edges.ends.size(); ++e)
+    if (edges.not_interior[e]) movable[edges.ends[e][0]] = movable[edges.ends[e][1]] = false;
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   double angle_floor = 180, q_floor = 1;
   for (std::size_t t = 0; t < nt; ++t) {
@@ -142,7 +148,6 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
       reach[f[(i + 1) % 3]] = std::min(reach[f[(i + 1) % 3]], kMaxMove * l);
     }
   const std::vector<Vec3> start = mesh.vertices;
-  const EdgeIds edges = edge_ids(mesh);
   for (int round = 0; round < rounds; ++round) {
     const std::vector<Vec3> normal = vertex_normals(mesh);
     std::vector<Vec3> face_normal(nt);

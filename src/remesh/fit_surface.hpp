@@ -20,12 +20,13 @@ struct SurfaceFit {
   double offset_max = 0;           // the largest move, in the mesh's units
 };
 
-// Moves the vertices of `mesh` flagged in `movable` (feature, corner and boundary vertices should
-// not be) along their normals towards `surface`, in `rounds` rounds. A move is at most a tenth of
+// Moves the vertices of `mesh` flagged in `movable` (feature and corner vertices should not be)
+// along their normals towards `surface`, in `rounds` rounds; vertices of an edge with other than
+// two triangles (a boundary or non-manifold edge) never move. A move is at most a tenth of
 // the vertex's shortest edge, and it is undone where a triangle it touches would fall below the
 // mesh's θmin or Qmin as they were, or turn by more than 25°: the fit never lowers θmin or Qmin.
 // The connectivity does not change. Deterministic, whatever the thread count.
 SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
-                          const std::vector<bool>& movable, int rounds);
+                          std::vector<bool> movable, int rounds);
 
 }  // namespace cvtmesh

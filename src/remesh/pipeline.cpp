@@ -115,18 +115,6 @@ void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
   flags = std::move(kept);
 }
 
-// The vertices the surface fit may move: surface vertices (not on a feature curve or at a
-// corner) off the output's boundary.
-std::vector<bool> off_boundary(const TriangleMesh& mesh, std::vector<bool> surface_vertices) {
-  std::map<Edge, int> uses;
-  for (const Triangle& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i)
-      ++uses[{std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3])}];
-  for (const auto& [e, n] : uses)
-    if (n != 2) surface_vertices[e[0]] = surface_vertices[e[1]] = false;
-  return surface_vertices;
-}
-
 // One output size at most; none only for initial seeds (their count is the size) or target
 // `count` random seeds: area-uniform, or with the density of the target lengths (paper §4.1).
 std::vector<Vec3> random_seeds(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
@@ -361,9 +349,9 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     removable.push_back(s.kind == VertexSupport::Kind::surface);
   result.valence_three_removed = remove_valence_three(result.mesh, removable, *projector);
   if (result.valence_three_removed > 0) drop_unused_vertices(result, removable);
+  // Surface vertices only: a feature or corner vertex stays on its curve.
   const SurfaceFit fit =
-      fit_to_surface(result.mesh, *projector, off_boundary(result.mesh, std::move(removable)),
-                     settings.fit_rounds);
+      fit_to_surface(result.mesh, *projector, std::move(removable), settings.fit_rounds);
   result.vertices_fitted = fit.vertices_moved;
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
