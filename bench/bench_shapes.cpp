@@ -44,8 +44,9 @@ void BM_ImproveShapes(benchmark::State& state) {
   const QualityReport before = measure_quality(start);
   for (auto _ : state) {
     TriangleMesh mesh = start;
+    std::vector<Edge> no_features;
     const auto shapes_start = std::chrono::steady_clock::now();
-    const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, {}, 5);
+    const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, no_features, 5);
     const double shapes_s = seconds_since(shapes_start);
     const double projections_s = seconds_to_project(surface, start.vertices);
     state.SetIterationTime(shapes_s);

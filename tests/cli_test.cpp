@@ -480,6 +480,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "mend_rounds",
                           "shape_flips",
                           "shape_moves",
+                          "short_edges_collapsed",
                           "vertices_fitted",
                           "angle_min_away_deg",
                           "q_min_away",

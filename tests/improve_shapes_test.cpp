@@ -10,6 +10,7 @@
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/curve_projector.hpp"
+#include "features/edge_uses.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/improve_shapes.hpp"
 #include "support/shapes.hpp"
@@ -25,6 +26,13 @@ bool has_edge(const TriangleMesh& mesh, Index a, Index b) {
   });
 }
 
+// improve_shapes with feature edges given by value (a collapse along a curve renames them).
+ShapeImprovement improve(TriangleMesh& mesh, const SurfaceProjector& surface,
+                         const CurveProjector* curves, std::vector<VertexSupport> support,
+                         std::vector<Edge> features, int sweeps) {
+  return improve_shapes(mesh, surface, curves, std::move(support), features, sweeps);
+}
+
 // A flat pair split along its long diagonal a-b: angles of 16.7° at a and b.
 TriangleMesh flat_pair() {
   return {{{-1, 0, 0}, {1, 0, 0}, {0, 0.3, 0}, {0, -0.3, 0}}, {{0, 1, 2}, {1, 0, 3}}};
@@ -33,7 +41,7 @@ TriangleMesh flat_pair() {
 TEST(ImproveShapes, FlipsTheLongDiagonalOfAFlatPair) {
   TriangleMesh mesh = flat_pair();
   const SurfaceProjector surface(mesh);
-  const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, {}, 5);
+  const ShapeImprovement done = improve(mesh, surface, nullptr, {}, {}, 5);
   EXPECT_EQ(done.flips, 1u);
   EXPECT_TRUE(has_edge(mesh, 2, 3));
   EXPECT_FALSE(has_edge(mesh, 0, 1));
@@ -60,7 +68,7 @@ TEST(ImproveShapes, FlipsAcrossAGentleFoldOfACurvedSurface) {
   const double before = measure_quality(mesh).angle_min_deg;
   const TriangleMesh cylinder = testing::cylinder(64, 512);
   const SurfaceProjector surface(cylinder);
-  EXPECT_EQ(improve_shapes(mesh, surface, nullptr, {}, {}, 5).flips, 1u);
+  EXPECT_EQ(improve(mesh, surface, nullptr, {}, {}, 5).flips, 1u);
   EXPECT_TRUE(has_edge(mesh, 2, 3));
   EXPECT_GT(measure_quality(mesh).angle_min_deg, before + 5);
 }
@@ -68,7 +76,7 @@ TEST(ImproveShapes, FlipsAcrossAGentleFoldOfACurvedSurface) {
 TEST(ImproveShapes, NeverFlipsAFeatureEdge) {
   TriangleMesh mesh = flat_pair();
   const SurfaceProjector surface(mesh);
-  EXPECT_EQ(improve_shapes(mesh, surface, nullptr, {}, {Edge{0, 1}}, 5).flips, 0u);
+  EXPECT_EQ(improve(mesh, surface, nullptr, {}, {Edge{0, 1}}, 5).flips, 0u);
   EXPECT_EQ(mesh.triangles, flat_pair().triangles);
 }
 
@@ -78,7 +86,7 @@ TEST(ImproveShapes, AJitteredSphereGetsBetterWithTheSameTopologyOnTheSurface) {
   TriangleMesh mesh = jittered_on_sphere(icosphere(3), 0.04, 7);  // edges about 0.1 long
   const QualityReport before = measure_quality(mesh);
   const TopologyReport topology = analyze_topology(mesh);
-  const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, {}, 5);
+  const ShapeImprovement done = improve(mesh, surface, nullptr, {}, {}, 5);
   const QualityReport after = measure_quality(mesh);
   EXPECT_GT(done.moves, 0u);
   EXPECT_GT(after.q_min, before.q_min + 0.1);
@@ -114,7 +122,7 @@ TEST(ImproveShapes, VerticesThatBendByUnder30DegreesMove) {
   const SurfaceProjector surface(sphere);
   TriangleMesh mesh = jittered_on_sphere(icosphere(1), 0.12, 5);
   const TriangleMesh start = mesh;
-  improve_shapes(mesh, surface, nullptr, {}, {}, 5);
+  improve(mesh, surface, nullptr, {}, {}, 5);
   std::size_t bending = 0, moved = 0;
   for (Index v = 0; v < mesh.vertices.size(); ++v) {
     const double defect = std::abs(angle_defect_deg(start, v));
@@ -134,7 +142,7 @@ TEST(ImproveShapes, FixedAndBoundaryVerticesStayWhereTheyAre) {
   std::vector<VertexSupport> support(mesh.vertices.size());
   for (Index v = 0; v < mesh.vertices.size(); v += 5) support[v].kind = VertexSupport::Kind::fixed;
   const TriangleMesh start = mesh;
-  const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, support, {}, 5);
+  const ShapeImprovement done = improve(mesh, surface, nullptr, support, {}, 5);
   EXPECT_GT(done.moves, 0u);
   std::vector<bool> boundary(mesh.vertices.size(), false);
   for (Index v = 0; v < mesh.vertices.size(); ++v)
@@ -190,7 +198,7 @@ void expect_slides_along_row(int row, bool one_link_lost = false) {
   std::vector<Edge> traced = ridge.edges;
   if (one_link_lost) traced.erase(traced.begin() + 3);
   const QualityReport before = measure_quality(mesh);
-  improve_shapes(mesh, surface, &curves, support, traced, 5);
+  improve(mesh, surface, &curves, support, traced, 5);
   const QualityReport after = measure_quality(mesh);
   EXPECT_LT(std::abs(mesh.vertices[middle].x), 0.09);
   for (Index v : ridge.curves[0].vertices) {
@@ -212,6 +220,90 @@ TEST(ImproveShapes, ABoundaryVertexSlidesAlongItsCurve) {
 
 TEST(ImproveShapes, ACreaseVertexWithOneUntracedLinkSlidesAlongItsCurve) {
   expect_slides_along_row(4, true);
+}
+
+// Splits edge a-b of `mesh` at a + t (b - a) into two, each of its two triangles into two:
+// returns the new vertex.
+Index split_edge(TriangleMesh& mesh, Index a, Index b, double t) {
+  const Index x = static_cast<Index>(mesh.vertices.size());
+  mesh.vertices.push_back(mesh.vertices[a] + t * (mesh.vertices[b] - mesh.vertices[a]));
+  const std::size_t count = mesh.triangles.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    Triangle& f = mesh.triangles[k];
+    for (int i = 0; i < 3; ++i) {
+      const Index u = f[i], v = f[(i + 1) % 3], w = f[(i + 2) % 3];
+      if ((u == a && v == b) || (u == b && v == a)) {
+        f = {u, x, w};
+        mesh.triangles.push_back({x, v, w});
+        break;
+      }
+    }
+  }
+  return x;
+}
+
+// A flat patch of equilateral triangles, n by n, in rows: vertex i of row j is j * (n + 1) + i.
+TriangleMesh lattice(int n) {
+  TriangleMesh mesh;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) mesh.vertices.push_back({i + 0.5 * j, std::sqrt(0.75) * j, 0});
+  const auto at = [&](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      mesh.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
+// A vertex a sixth of an edge from another, in a patch whose other vertices are held: however it
+// moves, its four triangles keep an angle of 30° (at best, in the middle of the edge it split,
+// half an edge from its neighbours).
+// Collapsed into its neighbour, the patch is whole again (the cramming that topology control
+// leaves where it adds seeds beside others).
+TEST(ImproveShapes, ACrowdedVertexIsCollapsedWithTheTopologyKept) {
+  const TriangleMesh start = lattice(10);  // 121 vertices: one may go (ShapeImprovement)
+  const SurfaceProjector surface(start);
+  TriangleMesh mesh = start;
+  const Index x = split_edge(mesh, 60, 61, 1.0 / 6);  // the middle of the patch and its right
+  std::vector<VertexSupport> support(mesh.vertices.size(), {VertexSupport::Kind::fixed, 0});
+  support[x].kind = VertexSupport::Kind::surface;
+  const ShapeImprovement done = improve(mesh, surface, nullptr, support, {}, 5);
+  EXPECT_EQ(done.collapses, 1u);
+  EXPECT_EQ(mesh.triangles.size(), start.triangles.size());
+  EXPECT_NEAR(measure_quality(mesh).angle_min_deg, 60, 1e-9);
+  for (const Triangle& t : mesh.triangles) EXPECT_EQ(std::count(t.begin(), t.end(), x), 0);
+  mesh.vertices.pop_back();  // unused now
+  EXPECT_TRUE(same_topology(analyze_topology(mesh), analyze_topology(start)));
+  // Held, it stays, and so do its crammed triangles.
+  TriangleMesh held = start;
+  split_edge(held, 60, 61, 1.0 / 6);
+  support[x].kind = VertexSupport::Kind::fixed;
+  EXPECT_EQ(improve(held, surface, nullptr, support, {}, 5).collapses, 0u);
+}
+
+// A crease vertex crammed beside another on its curve collapses along the curve: the curve's
+// edges then run from the vertex it merged into.
+TEST(ImproveShapes, ACrowdedCreaseVertexCollapsesAlongItsCurve) {
+  const TriangleMesh start = roof(10);  // 121 vertices: one may go
+  const SurfaceProjector surface(roof(40));
+  const CurveProjector curves(roof(40), row_of_roof(40, 20));
+  const Features ridge = row_of_roof(10, 5);
+  const Index a = ridge.curves[0].vertices[5], b = ridge.curves[0].vertices[6];
+  TriangleMesh mesh = start;
+  const Index x = split_edge(mesh, a, b, 1.0 / 6);
+  std::vector<VertexSupport> support(mesh.vertices.size(), {VertexSupport::Kind::fixed, 0});
+  support[x] = {VertexSupport::Kind::curve, 0};
+  std::vector<Edge> traced = ridge.edges;
+  std::erase(traced, edge_of(a, b));
+  traced.push_back(edge_of(a, x));
+  traced.push_back(edge_of(x, b));
+  std::sort(traced.begin(), traced.end());
+  const ShapeImprovement done = improve_shapes(mesh, surface, &curves, support, traced, 5);
+  EXPECT_EQ(done.collapses, 1u);
+  EXPECT_EQ(traced, ridge.edges);  // sorted alike: a-b is back, a-x and x-b are gone
+  EXPECT_NEAR(measure_quality(mesh).angle_min_deg, measure_quality(start).angle_min_deg, 1e-9);
+  EXPECT_EQ(mesh.triangles.size(), start.triangles.size());
 }
 
 // In a remesh, the last step mends what an unconverged tessellation leaves: a seed dragged most of
@@ -268,7 +360,7 @@ TEST(ImproveShapes, TheTipOfADomeStays) {
   const SurfaceProjector projector(surface);
   TriangleMesh mesh = dome(2, 6, [](int k) { return 2 * M_PI * std::pow(k / 6.0, 1.5); });
   EXPECT_LT(measure_quality(mesh).angle_min_deg, 35.0);
-  improve_shapes(mesh, projector, nullptr, {}, {}, 5);
+  improve(mesh, projector, nullptr, {}, {}, 5);
   EXPECT_EQ(mesh.vertices[0], (Vec3{0, 0, 1}));
 }
 

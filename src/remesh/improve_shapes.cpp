@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -66,6 +67,11 @@ constexpr int kDirections = 8;
 // The search runs only while the star's worst Q or θmin / 60° is under this.
 constexpr double kSearchBelow = 0.7;
 
+// One vertex in this many at most is taken away by collapses, so that the output keeps the
+// count asked for within 1%: where every triangle is a little under the bar above (a grid of
+// right triangles, 35°), each collapse could otherwise find one better and take it.
+constexpr std::size_t kCollapsesPer = 100;
+
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const TriangleShape s = triangle_shape(a, b, c);
   return s.min_angle < kMinAngleDeg || s.quality < kMinQuality;
@@ -95,13 +101,15 @@ enum class Star { disc, half_disc, other };
 class ShapeImprover {
  public:
   ShapeImprover(TriangleMesh& mesh, const SurfaceProjector& surface, const CurveProjector* curves,
-                std::vector<VertexSupport> support, const std::vector<Edge>& features)
+                std::vector<VertexSupport> support, std::vector<Edge>& features)
       : mesh_(mesh),
         surface_(surface),
         curves_(curves),
         support_(std::move(support)),
         features_(features),
         start_(mesh.vertices),
+        gone_(mesh.triangles.size(), false),
+        collapse_budget_(mesh.vertices.size() / kCollapsesPer),
         floor_(mesh_shape()),
         around_(triangles_around(mesh)) {
     support_.resize(mesh_.vertices.size());
@@ -116,13 +124,14 @@ class ShapeImprover {
   bool sweep(ShapeImprovement& done) {
     bool changed = false;
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
-      if (bad(t) && flip_an_edge(t, [&](Index a, Index b) { return try_flip(t, a, b); })) {
+      if (!gone_[t] && bad(t) &&
+          flip_an_edge(t, [&](Index a, Index b) { return try_flip(t, a, b); })) {
         ++done.flips;
         changed = true;
       }
     std::vector<Index> candidates;
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
-      if (bad(t))
+      if (!gone_[t] && bad(t))
         for (Index v : mesh_.triangles[t])
           for (Index s : around_[v])
             candidates.insert(candidates.end(), mesh_.triangles[s].begin(),
@@ -144,18 +153,30 @@ class ShapeImprover {
     floor_ = mesh_shape();
     std::vector<std::pair<double, Index>> worst_first;
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
-      if (bad(t)) worst_first.push_back({worst_of(std::array{t}).score(), t});
+      if (!gone_[t] && bad(t)) worst_first.push_back({worst_of(std::array{t}).score(), t});
     std::sort(worst_first.begin(), worst_first.end());
     bool changed = false;
     for (const auto& worst : worst_first) {
       const Index t = worst.second;
       const auto balancing = [&](Index a, Index b) { return try_balancing_flip(t, a, b, done); };
-      if (bad(t) && flip_an_edge(t, balancing)) {
+      if (gone_[t] || !bad(t)) continue;
+      if (flip_an_edge(t, balancing)) {
         ++done.flips;
+        changed = true;
+      } else if (try_collapse(t, done)) {
+        ++done.collapses;
         changed = true;
       }
     }
     return changed;
+  }
+
+  // Drops the triangles that collapses took away (their vertices stay, unused).
+  void finish() {
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
+      if (!gone_[t]) mesh_.triangles[kept++] = mesh_.triangles[t];
+    mesh_.triangles.resize(kept);
   }
 
  private:
@@ -181,7 +202,8 @@ class ShapeImprover {
   }
   WorstShape mesh_shape() const {
     WorstShape worst;
-    for (Index t = 0; t < mesh_.triangles.size(); ++t) worst.add(worst_of(std::array{t}));
+    for (Index t = 0; t < mesh_.triangles.size(); ++t)
+      if (!gone_[t]) worst.add(worst_of(std::array{t}));
     return worst;
   }
   WorstShape star_shape(Index v) const { return worst_of(around_[v]); }
@@ -440,6 +462,152 @@ class ShapeImprover {
     return false;
   }
 
+  // The neighbours of `v`, sorted.
+  std::vector<Index> neighbours(Index v) const {
+    std::vector<Index> out;
+    for (Index t : around_[v])
+      for (Index w : mesh_.triangles[t])
+        if (w != v) out.push_back(w);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  // Whether vertex `x` may be merged into its neighbour `y` (edge x-y collapsed, its two
+  // triangles gone) with the topology kept: x's star a disc, x-y an edge of two triangles whose
+  // third vertices c and d are the only neighbours x and y share (the link condition), and c and
+  // d left with three triangles or more. A surface vertex has no feature edge; a curve vertex
+  // goes along its curve, into a vertex of the same curve or a corner: its other feature edge
+  // then runs from y.
+  bool collapsible(Index x, Index y) const {
+    std::array<Index, 2> ends{};
+    if (support_[x].kind == VertexSupport::Kind::fixed || star(x, ends) != Star::disc) return false;
+    const std::vector<Index> both = sharing(x, y);
+    if (both.size() != 2) return false;
+    const std::vector<Index> nx = neighbours(x), ny = neighbours(y);
+    const auto along = std::ranges::count_if(nx, [&](Index w) { return is_feature(x, w); });
+    if (support_[x].kind == VertexSupport::Kind::surface && along != 0) return false;
+    if (support_[x].kind == VertexSupport::Kind::curve &&
+        (along != 2 || !is_feature(x, y) ||
+         (support_[y].kind != VertexSupport::Kind::fixed &&
+          (support_[y].kind != VertexSupport::Kind::curve ||
+           support_[y].curve != support_[x].curve))))
+      return false;
+    std::vector<Index> common;
+    std::ranges::set_intersection(nx, ny, std::back_inserter(common));
+    if (common.size() != 2) return false;
+    for (Index t : both)
+      for (Index w : mesh_.triangles[t])
+        if (w != x && w != y && around_[w].size() <= 3) return false;
+    return true;
+  }
+
+  // A change that neither flips nor moves can make, where topology control crowded seeds (three
+  // vertices a third of an edge apart at a tip or beside a feature curve: spool.off at 10k, the
+  // horns of triceratops.off at 1k): the shortest edge of bad triangle t collapses, a surface
+  // vertex merged into the other end, followed by moves around it as after a balancing flip. Kept
+  // when the worst triangle of the region is better (V - 1, E - 3, F - 2: the topology is kept);
+  // else undone. The moves kept with it count in `done`.
+  bool try_collapse(Index t, ShapeImprovement& done) {
+    if (done.collapses >= collapse_budget_) return false;
+    const Triangle f = mesh_.triangles[t];
+    std::vector<Vec3>& p = mesh_.vertices;
+    int shortest = 0;
+    for (int i = 1; i < 3; ++i)
+      if (distance(p[f[i]], p[f[(i + 1) % 3]]) < distance(p[f[shortest]], p[f[(shortest + 1) % 3]]))
+        shortest = i;
+    const Index a = f[shortest], b = f[(shortest + 1) % 3];
+    for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+      if (collapsible(x, y) && try_collapse(x, y, done)) return true;
+    }
+    return false;
+  }
+
+  bool try_collapse(Index x, Index y, ShapeImprovement& done) {
+    std::vector<Vec3>& p = mesh_.vertices;
+    std::vector<Index> moved = neighbours(x);
+    for (Index w : neighbours(y)) moved.push_back(w);
+    moved.push_back(y);
+    std::sort(moved.begin(), moved.end());
+    moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+    std::erase(moved, x);
+    const auto region_shape = [&] {
+      WorstShape worst;
+      for (Index v : moved) worst.add(star_shape(v));
+      return worst;
+    };
+    WorstShape before = region_shape();
+    before.add(star_shape(x));
+    // Saved for an undo: the triangles at x, the stars that change, the places that may.
+    const std::vector<Index> at_x = around_[x];
+    std::vector<Triangle> old_triangles;
+    std::vector<Vec3> normals;
+    for (Index s : at_x) {
+      old_triangles.push_back(mesh_.triangles[s]);
+      const auto [u, v, w] = mesh_.corners(s);
+      normals.push_back(unit_normal(u, v, w));
+    }
+    std::vector<std::pair<Index, std::vector<Index>>> stars;
+    for (Index s : at_x)
+      for (Index w : mesh_.triangles[s]) stars.push_back({w, around_[w]});
+    std::vector<Vec3> from;
+    for (Index v : moved) from.push_back(p[v]);
+    const double spanned = distance(p[x], p[y]);
+    // The collapse: triangles with both x and y go, the others at x take y instead.
+    for (std::size_t k = 0; k < at_x.size(); ++k) {
+      const Index s = at_x[k];
+      Triangle& tri = mesh_.triangles[s];
+      if (std::ranges::find(tri, y) != tri.end()) {
+        gone_[s] = true;
+        for (Index w : tri) std::erase(around_[w], s);
+      } else {
+        tri[slot(tri, x)] = y;
+        around_[y].push_back(s);
+      }
+    }
+    around_[x].clear();
+    const bool on_curve = support_[x].kind == VertexSupport::Kind::curve;
+    const std::vector<Edge> old_features = on_curve ? features_ : std::vector<Edge>{};
+    if (on_curve) {
+      for (Edge& e : features_)
+        if (e[0] == x || e[1] == x)
+          e = e == edge_of(x, y) ? e : edge_of(y, e[0] == x ? e[1] : e[0]);
+      std::erase(features_, edge_of(x, y));
+      std::sort(features_.begin(), features_.end());
+    }
+    // No triangle that stays may fold over, nor leave the surface.
+    bool kept = gap_around(y) <= allowed_gap(std::max(start_gap_[x], start_gap_[y]), spanned);
+    for (std::size_t k = 0; kept && k < at_x.size(); ++k) {
+      if (gone_[at_x[k]]) continue;
+      const auto [u, v, w] = mesh_.corners(at_x[k]);
+      const Vec3 n = unit_normal(u, v, w);
+      kept = !no_direction(n) && dot(n, normals[k]) >= kTurnCos;
+    }
+    std::size_t moves = 0;
+    if (kept) {
+      const auto move = [&](Index v) {
+        moves += support_[v].kind != VertexSupport::Kind::fixed && try_move(v);
+      };
+      move(y);
+      for (Index v : moved) move(v);
+      move(y);
+      kept = region_shape().better_than(before, floor_);
+    }
+    if (kept) {
+      done.moves += moves;
+      return true;
+    }
+    for (std::size_t k = 0; k < moved.size(); ++k) p[moved[k]] = from[k];
+    for (std::size_t k = 0; k < at_x.size(); ++k) {
+      mesh_.triangles[at_x[k]] = old_triangles[k];
+      gone_[at_x[k]] = false;
+    }
+    for (auto& [w, star] : stars) around_[w] = std::move(star);
+    around_[x] = at_x;
+    if (on_curve) features_ = old_features;
+    return false;
+  }
+
   // Moves `v` where the worst triangle of its star is better: first to the nearest surface point
   // to the mean of its neighbours (or halfway there), as tangential relaxation does; then, while
   // that star is still badly shaped, by a compass search for its best place on the surface (or
@@ -566,9 +734,11 @@ class ShapeImprover {
   const SurfaceProjector& surface_;
   const CurveProjector* curves_;
   std::vector<VertexSupport> support_;
-  const std::vector<Edge>& features_;
+  std::vector<Edge>& features_;    // sorted; a collapse along a curve renames one
   const std::vector<Vec3> start_;  // the vertices where they were
   std::vector<double> start_gap_;  // per vertex, gap_around it then
+  std::vector<bool> gone_;         // per triangle: taken away by a collapse
+  std::size_t collapse_budget_;
   WorstShape floor_;  // the mesh's worst Q and θmin at the start, then where balance() began
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
 };
@@ -577,7 +747,7 @@ class ShapeImprover {
 
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
-                                const std::vector<Edge>& feature_edges, int sweeps) {
+                                std::vector<Edge>& feature_edges, int sweeps) {
   ShapeImprovement done;
   if (sweeps <= 0) return done;  // nothing to set up for
   ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges);
@@ -586,6 +756,7 @@ ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surf
   for (int round = 0; round < sweeps && improver.balance(done); ++round)
     for (int k = 0; k < sweeps && improver.sweep(done); ++k) {
     }
+  improver.finish();
   return done;
 }
 

@@ -6,10 +6,12 @@
 // remeshers, then searches around each vertex still at a bad triangle for a better place (on the
 // surface, or along its feature curve for a vertex that traces one). Once that changes nothing,
 // flips that bring valences nearer 6, each with moves around it, mend what neither can alone: a
-// vertex of valence 4 beside ones of 8. Neither flips nor moves change the triangulation's
-// topology (a flip never makes an edge that is there already, a move changes no connectivity), so
-// a manifold stays a manifold with the same Euler characteristic and boundary loops, and a change
-// is kept only when the worst triangle it touches gets better.
+// vertex of valence 4 beside ones of 8; where no flip does, the shortest edge of a badly shaped
+// triangle collapses (a vertex merged into its neighbour, then moves around it): crowded seeds.
+// None of them changes the triangulation's topology (a flip never makes an edge that is there
+// already, a move changes no connectivity, a collapse keeps the link condition), so a manifold
+// stays a manifold with the same Euler characteristic and boundary loops, and a change is kept
+// only when the worst triangle it touches gets better.
 #pragma once
 
 #include <cstddef>
@@ -32,8 +34,9 @@ struct VertexSupport {
 };
 
 struct ShapeImprovement {
-  std::size_t flips = 0;  // edges flipped
-  std::size_t moves = 0;  // vertex moves kept
+  std::size_t flips = 0;      // edges flipped
+  std::size_t moves = 0;      // vertex moves kept
+  std::size_t collapses = 0;  // short edges collapsed (their surface vertex left unused)
 };
 
 // Improves the triangles of `mesh` with θmin under 40° or Q under 0.7 (a little above what a
@@ -44,11 +47,13 @@ struct ShapeImprovement {
 // edges, other than curve vertices on a boundary between their two feature edges, and tips and
 // saddles of the surface (angle defect over 30°; curve vertices excepted), never move.
 // `feature_edges` (sorted) never flip, and of the others only those with exactly two triangles,
-// which use them in opposite directions. Each change keeps the triangles it touches about as close
-// to the surface as they were. Sequential, in a fixed order: the result does not depend on the
-// thread count.
+// which use them in opposite directions. A collapse takes one surface vertex, or a curve vertex
+// along its curve (`feature_edges` then run from the vertex it merged into), out of the triangles,
+// leaving it unused; at most one vertex in 100 goes so. Each change keeps the triangles it touches
+// about as close to the surface as they were. Sequential, in a fixed order: the result does not
+// depend on the thread count.
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
-                                const std::vector<Edge>& feature_edges, int sweeps);
+                                std::vector<Edge>& feature_edges, int sweeps);
 
 }  // namespace cvtmesh

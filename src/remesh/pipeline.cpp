@@ -343,12 +343,13 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                                                  result.feature_edges, settings.shape_sweeps);
   result.shape_flips = shapes.flips;
   result.shape_moves = shapes.moves;
+  result.short_edges_collapsed = shapes.collapses;
   // Last of all, as a vertex of three triangles is often what the flips and moves leave.
   std::vector<bool> removable;
   for (const VertexSupport& s : supports)
     removable.push_back(s.kind == VertexSupport::Kind::surface);
   result.valence_three_removed = remove_valence_three(result.mesh, removable, *projector);
-  if (result.valence_three_removed > 0) drop_unused_vertices(result, removable);
+  if (result.valence_three_removed + shapes.collapses > 0) drop_unused_vertices(result, removable);
   // Surface vertices only: a feature or corner vertex stays on its curve.
   const SurfaceFit fit =
       fit_to_surface(result.mesh, *projector, std::move(removable), settings.fit_rounds);

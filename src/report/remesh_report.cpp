@@ -66,6 +66,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["polish_rounds"] = r.polish_rounds;
   j["shape_flips"] = r.shape_flips;
   j["shape_moves"] = r.shape_moves;
+  j["short_edges_collapsed"] = r.short_edges_collapsed;
   j["vertices_fitted"] = r.vertices_fitted;
   j["time_s"] = total;
   j["timings"] = {{"initialization", r.seconds_initialization},
@@ -96,10 +97,10 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
   text += fmt::format(
       "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
-      "triangles polished in {} rounds; {} edges flipped and {} vertices moved around badly "
-      "shaped triangles; {} vertices fitted to the input\n",
+      "triangles polished in {} rounds; {} edges flipped, {} collapsed and {} vertices moved "
+      "around badly shaped triangles; {} vertices fitted to the input\n",
       r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
-      r.polish_rounds, r.shape_flips, r.shape_moves, r.vertices_fitted);
+      r.polish_rounds, r.shape_flips, r.short_edges_collapsed, r.shape_moves, r.vertices_fitted);
   if (r.flat_ears_removed > 0)
     text += fmt::format(
         "  boundary  {} flat ears removed (a boundary vertex whose one triangle "
