@@ -167,10 +167,13 @@ void local_lloyd(const TriangleMesh& patch, const std::vector<double>& density,
     return std::binary_search(moving.begin(), moving.end(), local[k]);
   };
   std::vector<Vec3> positions;
+  // A step moves the seeds a little: their neighbour lists carry over (while `local` keeps its
+  // size), as between the optimizer's evaluations.
+  NeighborCache neighbors;
   for (int step = 0; step < steps; ++step) {
     positions.resize(local.size());
     for (std::size_t k = 0; k < local.size(); ++k) positions[k] = seeds[local[k]];
-    const RestrictedVoronoiDiagram rvd(patch, positions);
+    const RestrictedVoronoiDiagram rvd(patch, positions, neighbors);
     CellIntegrator integrator(rvd, density);
     RestrictedDelaunayBuilder rdt(rvd);
     CellCorners corners(is_moving);
