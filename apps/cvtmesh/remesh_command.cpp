@@ -173,7 +173,8 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--shape-sweeps", o->settings.shape_sweeps,
                   "Sweeps of edge flips and vertex moves along the surface around badly shaped "
-                  "triangles, last (0: none)")
+                  "triangles, then short-edge collapses where those do not help (at most 1% of "
+                  "the vertices), last (0: none)")
       ->default_val(5)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--fit-rounds", o->settings.fit_rounds,

@@ -192,7 +192,8 @@ polish_rounds : int, default 3
     Rounds of local Lloyd steps around badly shaped triangles (0: none).
 shape_sweeps : int, default 5
     Sweeps of edge flips and vertex moves along the surface around badly shaped triangles,
-    the last step but one (0: none).
+    then short-edge collapses where those do not help (at most 1% of the vertices), the last
+    step but one (0: none).
 fit_rounds : int, default 1
     Rounds of moving surface vertices along their normals so that the input lies between them
     and their triangles' middles, last; never lowers θmin or Qmin (0: vertices stay on the
