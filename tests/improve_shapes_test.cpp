@@ -306,6 +306,26 @@ TEST(ImproveShapes, ACrowdedCreaseVertexCollapsesAlongItsCurve) {
   EXPECT_EQ(mesh.triangles.size(), start.triangles.size());
 }
 
+// A flat tetrahedron (x just above the middle of base c-d-y, nearer y) with a fin on edge c-d,
+// beside a patch of 121 vertices so that one collapse is allowed: x's triangles are badly shaped
+// and no flip can help (each new diagonal is an edge already). Merged into any neighbour, x's
+// third triangle would become the base a second time: no collapse may do that.
+TEST(ImproveShapes, NoCollapseMakesATriangleThatIsThereAlready) {
+  TriangleMesh mesh = transformed(lattice(10), 1, {100, 0, 0});
+  const Index c = static_cast<Index>(mesh.vertices.size()), d = c + 1, y = c + 2, x = c + 3,
+              w = c + 4;
+  mesh.vertices.insert(mesh.vertices.end(),
+                       {{0, 0, 0}, {1, 0, 0}, {0.5, 0.866, 0}, {0.5, 0.6, 0.01}, {0.5, -0.5, 0.5}});
+  mesh.triangles.insert(mesh.triangles.end(),
+                        {{c, y, d}, {c, d, x}, {d, y, x}, {y, c, x}, {d, c, w}});
+  const SurfaceProjector surface(mesh);
+  improve(mesh, surface, nullptr, {}, {}, 5);
+  std::vector<Triangle> sorted = mesh.triangles;
+  for (Triangle& t : sorted) std::sort(t.begin(), t.end());
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+}
+
 // In a remesh, the last step mends what an unconverged tessellation leaves: a seed dragged most of
 // the way to its neighbour, with no optimization and no polishing after it.
 TEST(ImproveShapes, RemeshEndsWithItAndReportsIt) {

@@ -496,6 +496,14 @@ class ShapeImprover {
     std::vector<Index> common;
     std::ranges::set_intersection(nx, ny, std::back_inserter(common));
     if (common.size() != 2) return false;
+    // Where x has three triangles, its third becomes y, c, d: that triangle must not be there
+    // already (a tetrahedron, or one closed over a non-manifold edge c-d).
+    const auto has_both = [&](Index t) {
+      const Triangle& f = mesh_.triangles[t];
+      return std::ranges::find(f, common[0]) != f.end() &&
+             std::ranges::find(f, common[1]) != f.end();
+    };
+    if (std::ranges::any_of(around_[y], has_both)) return false;
     for (Index t : both)
       for (Index w : mesh_.triangles[t])
         if (w != x && w != y && around_[w].size() <= 3) return false;
