@@ -208,9 +208,11 @@ void drop_edges(std::vector<Edge> dropped, Features& f) {
 // other free creases it lost 4 of its 16 corners).
 constexpr double kFreePieceLengths = 4;
 
+// Drops those pieces, if of sharp edges only, and chains the rest again (turns at `scale`, as
+// creases at the output's scale are).
 template <class SharpOnly>
 void drop_short_free_creases(const TriangleMesh& mesh, const FeatureSettings& settings,
-                             const SharpOnly& sharp_only, Features& f) {
+                             double cos_threshold, const SharpOnly& sharp_only, Features& f) {
   const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
   std::vector<Edge> dropped;
   for (const FeatureCurve& c : f.curves) {
@@ -224,7 +226,6 @@ void drop_short_free_creases(const TriangleMesh& mesh, const FeatureSettings& se
   }
   if (dropped.empty()) return;
   drop_edges(std::move(dropped), f);
-  const double cos_threshold = std::cos(settings.angle_deg * std::numbers::pi / 180);
   chain(mesh, cos_threshold, settings.scale, settings.user_corners, f);
 }
 
@@ -346,7 +347,8 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     if (!dropped.empty()) {
       drop_edges(std::move(dropped), f);
       chain(mesh, cos_threshold, turn_scale, settings.user_corners, f);
-      if (settings.creases_at_scale) drop_short_free_creases(mesh, settings, sharp_only, f);
+      if (settings.creases_at_scale)
+        drop_short_free_creases(mesh, settings, cos_threshold, sharp_only, f);
     }
   }
   return f;
