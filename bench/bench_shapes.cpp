@@ -1,10 +1,12 @@
-// The output's last step (remesh/improve_shapes: flips, moves and balancing flips around badly
-// shaped triangles), against projecting every vertex onto the surface once, measured in the same
-// process so the ratio survives a noisy machine: the step's main cost is its projections.
+// The output's last step (remesh/improve_shapes: flips, moves, balancing flips and short-edge
+// collapses around badly shaped triangles), against projecting every vertex onto the surface
+// once, measured in the same process so the ratio survives a noisy machine: the step's main cost
+// is its projections.
 //   BM_ImproveShapes/J: an icosphere of level 4 (2,562 vertices) with each vertex moved at random
 //     by up to J% of the unit sphere's radius along it (edges are about 8% long), improved on an
 //     icosphere of level 6; counters shapes_s, projections_s (every vertex once),
-//     shapes_over_projections, flips, moves, and Qmin and θmin before and after.
+//     shapes_over_projections, flips, moves, collapses (J = 3 has some), and Qmin and θmin before
+//     and after.
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
 //     rounds (remesh/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
@@ -56,13 +58,14 @@ void BM_ImproveShapes(benchmark::State& state) {
     state.counters["shapes_over_projections"] = shapes_s / projections_s;
     state.counters["flips"] = static_cast<double>(done.flips);
     state.counters["moves"] = static_cast<double>(done.moves);
+    state.counters["collapses"] = static_cast<double>(done.collapses);
     state.counters["q_min_before"] = before.q_min;
     state.counters["q_min_after"] = after.q_min;
     state.counters["theta_min_before"] = before.angle_min_deg;
     state.counters["theta_min_after"] = after.angle_min_deg;
   }
 }
-BENCHMARK(BM_ImproveShapes)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImproveShapes)->Arg(1)->Arg(2)->Arg(3)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 void BM_FitSurface(benchmark::State& state) {
   const TriangleMesh fine = testing::icosphere(6);
