@@ -146,9 +146,9 @@ struct RemeshResult {
   // where the worst triangle it touches gets better. Neither changes the topology; feature,
   // corner and boundary vertices do not move, feature edges do not flip.
   std::size_t shape_flips = 0, shape_moves = 0;
-  // ... and, where neither helps, short edges of badly shaped triangles collapsed, a surface
-  // vertex merged into its neighbour where seeds were crowded (V - 1, E - 3, F - 2: the topology
-  // stays).
+  // ... and, where neither helps, short edges of badly shaped triangles collapsed: a surface
+  // vertex, or a curve vertex along its curve, merged into its neighbour (V - 1, E - 3, F - 2:
+  // the topology stays); at most 1% of the vertices.
   std::size_t short_edges_collapsed = 0;
   // Surface vertices moved off the input along their normals, last of all, so that the input lies
   // between them and their triangles' middles (remesh/fit_surface): the chords of a curved

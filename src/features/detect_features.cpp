@@ -183,6 +183,11 @@ constexpr double kFreeCreaseLengths = 8;
 // without features; the free creases of CAD parts: fandisk at 1k 0.43, couplingdown 1.09).
 constexpr double kFreeCreaseOfModel = 1.0 / 3;
 
+// Whether curve c meets no other feature: open, with one feature edge at each end.
+bool free_at_both_ends(const Adjacency& adj, const FeatureCurve& c) {
+  return !c.closed && adj.degree(c.vertices.front()) == 1 && adj.degree(c.vertices.back()) == 1;
+}
+
 std::vector<Edge> edges_of(const FeatureCurve& c) {
   std::vector<Edge> edges;
   for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
@@ -216,9 +221,7 @@ void drop_short_free_creases(const TriangleMesh& mesh, const FeatureSettings& se
   const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
   std::vector<Edge> dropped;
   for (const FeatureCurve& c : f.curves) {
-    const Index a = c.vertices.front(), b = c.vertices.back();
-    if (c.closed || adj.degree(a) != 1 || adj.degree(b) != 1 ||
-        curve_length(mesh, c) >= kFreePieceLengths * settings.scale)
+    if (!free_at_both_ends(adj, c) || curve_length(mesh, c) >= kFreePieceLengths * settings.scale)
       continue;
     const std::vector<Edge> edges = edges_of(c);
     if (std::all_of(edges.begin(), edges.end(), sharp_only))
@@ -285,9 +288,6 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     // chained again: a corner of a dropped curve may be an ordinary curve vertex now.
     const CreaseScale creases(mesh, uses, f.edges);
     const Adjacency adj = adjacency(mesh.vertices.size(), f.edges);
-    auto free_ends = [&](const FeatureCurve& c) {
-      return !c.closed && adj.degree(c.vertices.front()) == 1 && adj.degree(c.vertices.back()) == 1;
-    };
     std::vector<double> lengths;
     for (const FeatureCurve& c : f.curves) lengths.push_back(curve_length(mesh, c));
     // The model a free crease belongs to: its connected component, whose area's square root
@@ -306,9 +306,9 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       const double length = lengths[c];
       if (length < 2 * settings.scale) return false;
       if (!settings.creases_at_scale) return true;
-      const bool long_if_free =
-          !free_ends(f.curves[c]) || (length >= kFreeCreaseLengths * settings.scale &&
-                                      length >= kFreeCreaseOfModel * model_size(f.curves[c]));
+      const bool long_if_free = !free_at_both_ends(adj, f.curves[c]) ||
+                                (length >= kFreeCreaseLengths * settings.scale &&
+                                 length >= kFreeCreaseOfModel * model_size(f.curves[c]));
       return long_if_free && creases.is_crease(f.curves[c], settings.scale, settings.angle_deg);
     };
     std::vector<std::vector<Edge>> curve_edges;

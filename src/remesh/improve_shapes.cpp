@@ -287,6 +287,16 @@ class ShapeImprover {
     return std::binary_search(features_.begin(), features_.end(), edge_of(a, b));
   }
 
+  static Index other_end(const Edge& e, Index v) { return e[0] == v ? e[1] : e[0]; }
+
+  // Takes the feature edges `gone` (there) out of the sorted list and puts `added` in.
+  void replace_features(const std::vector<Edge>& gone, const std::vector<Edge>& added) {
+    for (const Edge& e : gone)
+      features_.erase(std::lower_bound(features_.begin(), features_.end(), e));
+    for (const Edge& e : added)
+      features_.insert(std::lower_bound(features_.begin(), features_.end(), e), e);
+  }
+
   // The triangles with both `a` and `b`.
   std::vector<Index> sharing(Index a, Index b) const {
     std::vector<Index> out;
@@ -534,7 +544,8 @@ class ShapeImprover {
 
   bool try_collapse(Index x, Index y, ShapeImprovement& done) {
     std::vector<Vec3>& p = mesh_.vertices;
-    std::vector<Index> moved = neighbours(x);
+    const std::vector<Index> neighbours_before = neighbours(x);
+    std::vector<Index> moved = neighbours_before;
     for (Index w : neighbours(y)) moved.push_back(w);
     moved.push_back(y);
     std::sort(moved.begin(), moved.end());
@@ -575,14 +586,15 @@ class ShapeImprover {
       }
     }
     around_[x].clear();
-    const bool on_curve = support_[x].kind == VertexSupport::Kind::curve;
-    const std::vector<Edge> old_features = on_curve ? features_ : std::vector<Edge>{};
-    if (on_curve) {
-      for (Edge& e : features_)
-        if (e[0] == x || e[1] == x)
-          e = e == edge_of(x, y) ? e : edge_of(y, e[0] == x ? e[1] : e[0]);
-      std::erase(features_, edge_of(x, y));
-      std::sort(features_.begin(), features_.end());
+    // Along a curve, x's two feature edges x-y and x-z give way to y-z.
+    std::vector<Edge> along_x, along_y;
+    if (support_[x].kind == VertexSupport::Kind::curve) {
+      for (Index z : neighbours_before)
+        if (is_feature(x, z)) along_x.push_back(edge_of(x, z));
+      const Index z =
+          along_x[0] == edge_of(x, y) ? other_end(along_x[1], x) : other_end(along_x[0], x);
+      if (!is_feature(y, z)) along_y.push_back(edge_of(y, z));
+      replace_features(along_x, along_y);
     }
     // No triangle that stays may fold over, nor leave the surface.
     bool kept = gap_around(y) <= allowed_gap(std::max(start_gap_[x], start_gap_[y]), spanned);
@@ -613,7 +625,7 @@ class ShapeImprover {
     }
     for (auto& [w, star] : stars) around_[w] = std::move(star);
     around_[x] = at_x;
-    if (on_curve) features_ = old_features;
+    replace_features(along_y, along_x);
     return false;
   }
 
