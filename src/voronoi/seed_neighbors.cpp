@@ -18,18 +18,21 @@ namespace {
 
 // Margins for the rounding of distances computed in floating point, far above it.
 constexpr double kRoundedDown = 1 - 1e-9, kRoundedUp = 1 + 1e-9;
-// One seed in this many, those that moved most, is checked one by one (moved_neighbors).
+// One seed in this many, those that moved most, is checked one by one (bound_by_movers).
 constexpr std::size_t kMoversPer = 100;
 
 }  // namespace
 
-void reject_bad_seeds(const std::vector<Vec3>& seeds) {
+void reject_non_finite_seeds(const std::vector<Vec3>& seeds) {
   if (seeds.empty()) throw InvalidArgument("no seeds");
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     const Vec3& p = seeds[s];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InvalidArgument("seed " + std::to_string(s) + " has a non-finite coordinate");
   }
+}
+
+void reject_identical_seeds(const std::vector<Vec3>& seeds) {
   std::vector<Index> order(seeds.size());
   std::iota(order.begin(), order.end(), Index{0});
   std::sort(order.begin(), order.end(), [&](Index a, Index b) {
@@ -74,8 +77,8 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
   return n;
 }
 
-SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& was,
-                              const std::vector<Vec3>& seeds, const PointTree& tree) {
+MovedLists shrunk_for_moves(SeedNeighbors previous, const std::vector<Vec3>& was,
+                            const std::vector<Vec3>& seeds) {
   std::vector<double> move(seeds.size());
   for (std::size_t s = 0; s < seeds.size(); ++s) move[s] = distance(seeds[s], was[s]);
   // The few seeds that moved most (an optimization's step moves some several times as far as
@@ -98,24 +101,30 @@ SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& w
                         c = reach > 0 ? kRoundedDown * reach * reach : 0;
                       }
                     });
+  return {std::move(previous), std::move(move), largest};
+}
+
+SeedNeighbors bound_by_movers(MovedLists moved, const std::vector<Vec3>& seeds,
+                              const PointTree& tree) {
+  SeedNeighbors& lists = moved.lists;
   // A seed that moved farther than `largest` bounds the radius of every list it is not in by
   // its distance now, where it comes within that radius (serially, in order: the same result
   // on any thread count).
   double reach2 = 0;
-  for (const double c : previous.complete2)
+  for (const double c : lists.complete2)
     if (!std::isinf(c)) reach2 = std::max(reach2, c);
   std::vector<Index> near;
   for (Index x = 0; x < seeds.size(); ++x) {
-    if (!(move[x] > largest)) continue;
+    if (!(moved.move[x] > moved.largest)) continue;
     tree.within(seeds[x], reach2, near);
     for (const Index s : near) {
-      double& c = previous.complete2[s];
-      const std::span<const Index> list = previous.of(s);
+      double& c = lists.complete2[s];
+      const std::span<const Index> list = lists.of(s);
       if (s == x || std::find(list.begin(), list.end(), x) != list.end()) continue;
       c = std::min(c, kRoundedDown * dot(seeds[x] - seeds[s], seeds[x] - seeds[s]));
     }
   }
-  return previous;
+  return std::move(lists);
 }
 
 }  // namespace cvtmesh

@@ -28,9 +28,10 @@ struct SeedNeighbors {
   }
 };
 
-// Throws InvalidArgument for no seeds, a non-finite seed, or identical seeds (naming the
-// first pair).
-void reject_bad_seeds(const std::vector<Vec3>& seeds);
+// Throws InvalidArgument for no seeds or a non-finite seed (naming the first).
+void reject_non_finite_seeds(const std::vector<Vec3>& seeds);
+// Throws InvalidArgument for identical seeds (naming the first pair).
+void reject_identical_seeds(const std::vector<Vec3>& seeds);
 
 // Each seed's k nearest other seeds (fewer when there are fewer seeds).
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
@@ -40,10 +41,18 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
 // 19: seeds that moved little since keep their candidates, and no kNN search is needed): each
 // re-sorted by distance, its complete radius shrunk by its seed's move plus the largest move
 // of all but the 1% that moved most (a seed outside a list was at least that far from it, and
-// both have moved since), and by the distance now of each of those 1% outside it (found with
-// `tree`, over `seeds`).
-SeedNeighbors moved_neighbors(SeedNeighbors previous, const std::vector<Vec3>& was,
-                              const std::vector<Vec3>& seeds, const PointTree& tree);
+// both have moved since), and then (bound_by_movers) by the distance now of each of those 1%
+// outside it. In two steps: the first needs no kd-tree, so it runs while one is built.
+struct MovedLists {
+  SeedNeighbors lists;
+  std::vector<double> move;  // per seed, how far it moved
+  double largest = 0;        // the largest move of all but the 1% that moved most
+};
+MovedLists shrunk_for_moves(SeedNeighbors previous, const std::vector<Vec3>& was,
+                            const std::vector<Vec3>& seeds);
+// `tree` holds `seeds`.
+SeedNeighbors bound_by_movers(MovedLists moved, const std::vector<Vec3>& seeds,
+                              const PointTree& tree);
 
 // Sorts seed ids by squared distance to seed s, ties by id.
 void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> ids);
