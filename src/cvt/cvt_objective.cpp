@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <numeric>
@@ -45,7 +46,8 @@ std::vector<CvtObjective::Tangent> CvtObjective::project(std::vector<Vec3>& seed
   };
   for (bool changed = true; changed;) {
     changed = false;
-    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    // The keys are distinct (the seed id is one): any sort gives the one order.
+    tbb::parallel_sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
     for (std::size_t k = 1; k < order.size(); ++k) {
       const std::size_t a = order[k - 1], b = order[k];
       if (!(at(a) == at(b))) continue;
