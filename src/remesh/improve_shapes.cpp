@@ -8,6 +8,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <span>
 
 #include "cvtmesh/quality.hpp"
 #include "features/curve_projector.hpp"
@@ -71,6 +72,8 @@ constexpr double kSearchBelow = 0.7;
 // count asked for within 1%: where every triangle is a little under the bar above (a grid of
 // right triangles, 35°), each collapse could otherwise find one better and take it.
 constexpr std::size_t kCollapsesPer = 100;
+
+constexpr Index kNoVertex = std::numeric_limits<Index>::max();
 
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const TriangleShape s = triangle_shape(a, b, c);
@@ -436,50 +439,70 @@ class ShapeImprover {
     if (off_after >= off_before || !flip_keeps_surface(*q)) return false;
     // The quad's vertices and their neighbours move: the four alone often cannot even out the
     // angles that the new valences ask for.
-    std::vector<Index> moved(quad.begin(), quad.end());
-    for (Index v : quad)
-      for (Index t : around_[v])
-        moved.insert(moved.end(), mesh_.triangles[t].begin(), mesh_.triangles[t].end());
-    std::sort(moved.begin(), moved.end());
-    moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
-    const auto region_shape = [&] {
-      WorstShape worst;
-      for (Index v : moved) worst.add(star_shape(v));
-      return worst;
-    };
-    const WorstShape before = region_shape();
-    std::vector<Vec3> from;
-    for (Index v : moved) from.push_back(mesh_.vertices[v]);
+    const Region region = region_at(quad);
     const Triangle f1 = mesh_.triangles[q->t1], f2 = mesh_.triangles[q->t2];
     std::array<std::vector<Index>, 4> stars;
     for (int k = 0; k < 4; ++k) stars[k] = around_[quad[k]];
     flip(*q);
-    std::size_t moves = 0;
-    const auto move = [&](Index v) {
-      moves += support_[v].kind != VertexSupport::Kind::fixed && try_move(v);
-    };
-    for (Index v : quad) move(v);
-    for (Index v : moved) move(v);
-    for (Index v : quad) move(v);
-    if (region_shape().better_than(before, floor_)) {
-      done.moves += moves;
-      return true;
-    }
-    for (std::size_t k = 0; k < moved.size(); ++k) mesh_.vertices[moved[k]] = from[k];
+    if (settled(region, quad, done)) return true;
     for (int k = 0; k < 4; ++k) around_[quad[k]] = std::move(stars[k]);
     mesh_.triangles[q->t1] = f1;
     mesh_.triangles[q->t2] = f2;
     return false;
   }
 
-  // The neighbours of `v`, sorted.
-  std::vector<Index> neighbours(Index v) const {
+  // What a change at the vertices `core` and the moves after it touch: the vertices of the
+  // triangles at `core` (sorted, but for `left_out`, which the change takes away), where they
+  // are, and the worst triangle of all their stars (left_out's too).
+  struct Region {
+    std::vector<Index> vertices;
+    std::vector<Vec3> from;
+    WorstShape before;
+  };
+  Region region_at(std::span<const Index> core, Index left_out = kNoVertex) const {
+    Region r{ring(core), {}, {}};
+    for (Index v : r.vertices) r.before.add(star_shape(v));
+    std::erase(r.vertices, left_out);
+    for (Index v : r.vertices) r.from.push_back(mesh_.vertices[v]);
+    return r;
+  }
+
+  // After a change at `core`: moves `core`, the region's vertices, then `core` again, and keeps
+  // them (counted in `done`) when the region's worst triangle is better than before; else puts
+  // the region's vertices back (the caller undoes its change).
+  bool settled(const Region& r, std::span<const Index> core, ShapeImprovement& done) {
+    std::size_t moves = 0;
+    const auto move = [&](Index v) {
+      moves += support_[v].kind != VertexSupport::Kind::fixed && try_move(v);
+    };
+    for (Index v : core) move(v);
+    for (Index v : r.vertices) move(v);
+    for (Index v : core) move(v);
+    WorstShape after;
+    for (Index v : r.vertices) after.add(star_shape(v));
+    if (after.better_than(r.before, floor_)) {
+      done.moves += moves;
+      return true;
+    }
+    for (std::size_t k = 0; k < r.vertices.size(); ++k) mesh_.vertices[r.vertices[k]] = r.from[k];
+    return false;
+  }
+
+  // The vertices of the triangles at `core`, sorted (`core` among them, where it has triangles).
+  std::vector<Index> ring(std::span<const Index> core) const {
     std::vector<Index> out;
-    for (Index t : around_[v])
-      for (Index w : mesh_.triangles[t])
-        if (w != v) out.push_back(w);
+    for (Index v : core)
+      for (Index t : around_[v])
+        out.insert(out.end(), mesh_.triangles[t].begin(), mesh_.triangles[t].end());
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  // The neighbours of `v`, sorted.
+  std::vector<Index> neighbours(Index v) const {
+    std::vector<Index> out = ring(std::array{v});
+    std::erase(out, v);
     return out;
   }
 
@@ -543,22 +566,9 @@ class ShapeImprover {
   }
 
   bool try_collapse(Index x, Index y, ShapeImprovement& done) {
-    std::vector<Vec3>& p = mesh_.vertices;
     const std::vector<Index> neighbours_before = neighbours(x);
-    std::vector<Index> moved = neighbours_before;
-    for (Index w : neighbours(y)) moved.push_back(w);
-    moved.push_back(y);
-    std::sort(moved.begin(), moved.end());
-    moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
-    std::erase(moved, x);
-    const auto region_shape = [&] {
-      WorstShape worst;
-      for (Index v : moved) worst.add(star_shape(v));
-      return worst;
-    };
-    WorstShape before = region_shape();
-    before.add(star_shape(x));
-    // Saved for an undo: the triangles at x, the stars that change, the places that may.
+    const Region region = region_at(std::array{x, y}, x);
+    // Saved for an undo: the triangles at x, the stars that change.
     const std::vector<Index> at_x = around_[x];
     std::vector<Triangle> old_triangles;
     std::vector<Vec3> normals;
@@ -570,9 +580,7 @@ class ShapeImprover {
     std::vector<std::pair<Index, std::vector<Index>>> stars;
     for (Index s : at_x)
       for (Index w : mesh_.triangles[s]) stars.push_back({w, around_[w]});
-    std::vector<Vec3> from;
-    for (Index v : moved) from.push_back(p[v]);
-    const double spanned = distance(p[x], p[y]);
+    const double spanned = distance(mesh_.vertices[x], mesh_.vertices[y]);
     // The collapse: triangles with both x and y go, the others at x take y instead.
     for (std::size_t k = 0; k < at_x.size(); ++k) {
       const Index s = at_x[k];
@@ -604,21 +612,7 @@ class ShapeImprover {
       const Vec3 n = unit_normal(u, v, w);
       kept = !no_direction(n) && dot(n, normals[k]) >= kTurnCos;
     }
-    std::size_t moves = 0;
-    if (kept) {
-      const auto move = [&](Index v) {
-        moves += support_[v].kind != VertexSupport::Kind::fixed && try_move(v);
-      };
-      move(y);
-      for (Index v : moved) move(v);
-      move(y);
-      kept = region_shape().better_than(before, floor_);
-    }
-    if (kept) {
-      done.moves += moves;
-      return true;
-    }
-    for (std::size_t k = 0; k < moved.size(); ++k) p[moved[k]] = from[k];
+    if (kept && settled(region, std::array{y}, done)) return true;
     for (std::size_t k = 0; k < at_x.size(); ++k) {
       mesh_.triangles[at_x[k]] = old_triangles[k];
       gone_[at_x[k]] = false;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <deque>
 #include <optional>
+#include <utility>
 
 #include "cvtmesh/rvd.hpp"
 #include "geometry/median.hpp"
@@ -318,7 +319,11 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
       },
       [&] {
         reject_identical_seeds(seeds);
-        if (cached) shrunk = shrunk_for_moves(state->lists, state->at, seeds);
+        // Taken out of the cache, which gets this build's lists at its end (and stays empty,
+        // so unused, if the build throws first).
+        if (cached)
+          shrunk = shrunk_for_moves(std::exchange(state->lists, {}), std::exchange(state->at, {}),
+                                    seeds);
       });
   const auto start = std::chrono::steady_clock::now();
   // Kept while most lists still reach kKeptReach of what a search gives; past that, radius
