@@ -13,7 +13,7 @@
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
-#include "remesh/mend_topology.hpp"
+#include "features/edge_uses.hpp"
 #include "sizing/size_field.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"

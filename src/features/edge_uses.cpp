@@ -22,4 +22,11 @@ std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh) {
   return uses;
 }
 
+std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
+  std::vector<Edge> edges;
+  for (const EdgeUse& use : edge_uses(mesh)) edges.push_back(use.edge);
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
 }  // namespace cvtmesh

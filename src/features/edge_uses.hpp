@@ -25,4 +25,7 @@ struct EdgeUse {
 // Every triangle's three edges, sorted by edge, then corner.
 std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh);
 
+// The distinct edges of a mesh, each with the smaller vertex id first, sorted.
+std::vector<Edge> sorted_edges(const TriangleMesh& mesh);
+
 }  // namespace cvtmesh

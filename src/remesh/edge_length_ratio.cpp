@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "remesh/mend_topology.hpp"
+#include "features/edge_uses.hpp"
 
 namespace cvtmesh {
 

@@ -10,9 +10,6 @@
 
 namespace cvtmesh {
 
-// The distinct edges of a mesh, each with the smaller vertex id first, sorted.
-std::vector<Edge> sorted_edges(const TriangleMesh& mesh);
-
 struct MendContext {
   const TriangleMesh& surface;
   const TopologyReport& surface_topology;

@@ -16,6 +16,7 @@
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "features/curve_lloyd.hpp"
+#include "features/edge_uses.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
 #include "geometry/area_sampler.hpp"
