@@ -1,0 +1,136 @@
+#include "remesh/finish_output.hpp"
+
+#include <algorithm>
+#include <map>
+#include <span>
+
+#include "cvtmesh/repair.hpp"
+#include "features/edge_uses.hpp"
+#include "remesh/fit_surface.hpp"
+#include "remesh/flat_ears.hpp"
+#include "remesh/improve_shapes.hpp"
+#include "remesh/last_step.hpp"
+#include "remesh/valence_three.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// The output's vertices are seeds, matched by position (repairs renumber them).
+std::map<Vec3, Index> vertex_ids(const TriangleMesh& output) {
+  std::map<Vec3, Index> id;
+  for (Index v = 0; v < output.vertices.size(); ++v) id.emplace(output.vertices[v], v);
+  return id;
+}
+
+// The ids (`id`: vertex_ids of the output) of the output vertices at `seeds` (those with a
+// vertex), sorted.
+std::vector<Index> vertices_at(const std::map<Vec3, Index>& id, std::span<const Vec3> seeds) {
+  std::vector<Index> found;
+  for (const Vec3& p : seeds)
+    if (const auto it = id.find(p); it != id.end()) found.push_back(it->second);
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+// The links that are edges of the output, in output vertex ids (`id`: vertex_ids(output)).
+std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
+                               const std::vector<Vec3>& seeds, const TriangleMesh& output,
+                               const std::map<Vec3, Index>& id) {
+  const std::vector<Edge> edges = sorted_edges(output);
+  std::vector<Edge> traced;
+  for (const FeatureLink& link : links) {
+    const auto ia = id.find(seeds[link.seeds[0]]), ib = id.find(seeds[link.seeds[1]]);
+    if (ia == id.end() || ib == id.end()) continue;
+    const Edge e{std::min(ia->second, ib->second), std::max(ia->second, ib->second)};
+    if (std::binary_search(edges.begin(), edges.end(), e)) traced.push_back(e);
+  }
+  std::sort(traced.begin(), traced.end());
+  traced.erase(std::unique(traced.begin(), traced.end()), traced.end());
+  return traced;
+}
+
+// Per output vertex, where improve_shapes may move it: a curve seed along its curve; a corner,
+// or any other end of a traced feature edge, nowhere; the rest on the surface.
+std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
+                                           const std::map<Vec3, Index>& id,
+                                           const std::vector<Vec3>& seeds,
+                                           const SeedConstraints& constraints,
+                                           const std::vector<Edge>& feature_edges) {
+  using Kind = VertexSupport::Kind;
+  std::vector<VertexSupport> support(output.vertices.size());
+  for (const Edge& e : feature_edges) support[e[0]].kind = support[e[1]].kind = Kind::fixed;
+  for (std::size_t s = 0; s < constraints.kind.size(); ++s)
+    if (constraints.kind[s] != SeedConstraints::Kind::surface)
+      if (const auto it = id.find(seeds[s]); it != id.end()) {
+        const bool curve = constraints.kind[s] == SeedConstraints::Kind::curve;
+        support[it->second] = {curve ? Kind::curve : Kind::fixed, constraints.curve[s]};
+      }
+  return support;
+}
+
+// Drops the vertices no triangle uses (repair_mesh), and renumbers the rest in `r`'s vertices
+// added and feature edges, and in `flags` (per vertex).
+void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
+  std::vector<Index> new_id;
+  repair_mesh(r.mesh, &new_id);
+  std::erase_if(r.vertices_added, [&](Index v) { return new_id[v] == kRemovedVertex; });
+  for (Index& v : r.vertices_added) v = new_id[v];
+  r.feature_edges = edges_after_repair(r.feature_edges, new_id);
+  std::vector<bool> kept(r.mesh.vertices.size(), false);
+  for (std::size_t v = 0; v < new_id.size(); ++v)
+    if (new_id[v] != kRemovedVertex) kept[new_id[v]] = flags[v];
+  flags = std::move(kept);
+}
+
+}  // namespace
+
+void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
+                   std::size_t optimized_seeds, const SeedConstraints& constraints,
+                   const Features& features, const CurveProjector& curves,
+                   const SurfaceProjector& projector, const RemeshSettings& settings) {
+  // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold. Only for
+  // a manifold input: a non-manifold input edge is a feature the output keeps (issue 18).
+  const LastStep last = finish_manifold(result.mesh, result.input_topology, projector);
+  result.triangles_removed = last.triangles_removed;
+  result.holes_closed = last.closed.holes;
+  result.triangles_closing_holes = last.closed.triangles;
+  result.vertices_closing_holes = last.closed.vertices;
+  // The mesh's first vertices are the seeds, by id (PolishedOutput).
+  std::vector<bool> corners(result.mesh.vertices.size(), false);
+  for (const Index s : constraints.corner_seed) corners[s] = true;
+  result.flat_ears_removed = remove_flat_ears(result.mesh, corners);
+  repair_mesh(result.mesh);  // drops seeds whose cells are empty
+  const std::map<Vec3, Index> output_id = vertex_ids(result.mesh);
+  result.vertices_added =
+      vertices_at(output_id, std::span(seeds).subspan(std::min(optimized_seeds, seeds.size())));
+  if (!constraints.empty()) {
+    const std::vector<FeatureLink> links = feature_links(seeds, constraints, features, curves);
+    result.feature_edges = traced_edges(links, seeds, result.mesh, output_id);
+    std::vector<Edge> wanted;
+    for (const FeatureLink& link : links) wanted.push_back(link.seeds);
+    std::sort(wanted.begin(), wanted.end());
+    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+    result.feature_edges_missing = wanted.size() - result.feature_edges.size();
+  }
+  // Last, as it moves vertices off the seeds' positions (which the matching above needs).
+  const std::vector<VertexSupport> supports =
+      vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges);
+  const ShapeImprovement shapes = improve_shapes(result.mesh, projector, &curves, supports,
+                                                 result.feature_edges, settings.shape_sweeps);
+  result.shape_flips = shapes.flips;
+  result.shape_moves = shapes.moves;
+  result.short_edges_collapsed = shapes.collapses;
+  // Last of all, as a vertex of three triangles is often what the flips and moves leave.
+  std::vector<bool> removable;
+  for (const VertexSupport& s : supports)
+    removable.push_back(s.kind == VertexSupport::Kind::surface);
+  result.valence_three_removed = remove_valence_three(result.mesh, removable, projector);
+  if (result.valence_three_removed + shapes.collapses > 0) drop_unused_vertices(result, removable);
+  // Surface vertices only: a feature or corner vertex stays on its curve.
+  const SurfaceFit fit =
+      fit_to_surface(result.mesh, projector, std::move(removable), settings.fit_rounds);
+  result.vertices_fitted = fit.vertices_moved;
+}
+
+}  // namespace cvtmesh

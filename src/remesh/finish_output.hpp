@@ -1,0 +1,25 @@
+// The output's finishing steps, after topology control (paper §4.4), in this order: the
+// guaranteed last step (finish_manifold), flat ears at the boundary, the output vertices that
+// topology control added and the feature links traced (matched to the seeds by position, so
+// before anything moves them), the last flips, moves and collapses around badly shaped triangles
+// (improve_shapes), vertices of three triangles, and the fit to the input.
+#pragma once
+
+#include <vector>
+
+#include "cvtmesh/remesh.hpp"
+#include "features/feature_seeds.hpp"
+
+namespace cvtmesh {
+
+class SurfaceProjector;
+
+// `result.mesh`: the extraction topology control returned (its first vertices the seeds, by id);
+// `seeds`: all the seeds, those topology control added from `optimized_seeds` on. Fills
+// `result`'s counts of what each step did, its feature edges, and the vertices added.
+void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
+                   std::size_t optimized_seeds, const SeedConstraints& constraints,
+                   const Features& features, const CurveProjector& curves,
+                   const SurfaceProjector& projector, const RemeshSettings& settings);
+
+}  // namespace cvtmesh
