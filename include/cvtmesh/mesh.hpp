@@ -11,6 +11,8 @@
 namespace cvtmesh {
 
 using Index = std::uint32_t;
+// No vertex, seed or component: an unset or absent index.
+inline constexpr Index kNoIndex = ~Index{0};
 using Triangle = std::array<Index, 3>;
 
 struct TriangleMesh {

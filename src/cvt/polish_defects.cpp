@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <functional>
 #include <iterator>
-#include <limits>
 
 #include "cvtmesh/quality.hpp"
 #include "geometry/point_tree.hpp"
@@ -18,8 +17,6 @@ namespace {
 // θmin 30°, Q 0.6. Where Lloyd cannot reach it (next to feature corners), the rounds stop.
 constexpr double kMinAngleDeg = 35;
 constexpr double kMinQuality = 0.65;
-
-constexpr Index kUnset = std::numeric_limits<Index>::max();
 
 // The input triangles each cell covers, as (seed, triangle) pairs.
 class CellCoverage : public PolygonSink {
@@ -96,11 +93,11 @@ TriangleMesh among_seeds(const TriangleMesh& mesh, std::size_t n) {
 TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids,
                          std::vector<Index>* original = nullptr) {
   TriangleMesh sub;
-  std::vector<Index> renumbered(surface.vertices.size(), kUnset);
+  std::vector<Index> renumbered(surface.vertices.size(), kNoIndex);
   for (Index t : ids) {
     Triangle f = surface.triangles[t];
     for (Index& v : f) {
-      if (renumbered[v] == kUnset) {
+      if (renumbered[v] == kNoIndex) {
         renumbered[v] = static_cast<Index>(sub.vertices.size());
         sub.vertices.push_back(surface.vertices[v]);
         if (original) original->push_back(v);

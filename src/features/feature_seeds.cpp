@@ -14,8 +14,6 @@ namespace cvtmesh {
 
 namespace {
 
-constexpr Index kNoSeed = std::numeric_limits<Index>::max();
-
 // The shortest missing link, in spacings, that a new seed splits (see mend_missing_links).
 constexpr double kShortestSplitLink = 0.9;
 
@@ -244,7 +242,7 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
     const Vec3 middle = curves.at(link.curve, (link.from + link.to) / 2);
     const double length = spacing.length(link.curve, link.from, link.to);
     const auto n = static_cast<std::size_t>(std::ceil(8 * length / spacing.spacing())) + 1;
-    Index stray = kNoSeed;
+    Index stray = kNoIndex;
     double stray_d2 = std::numeric_limits<double>::infinity();
     for (std::size_t i = 1; i < n; ++i) {
       const double s =
@@ -259,7 +257,7 @@ std::size_t mend_missing_links(std::vector<Vec3>& seeds, SeedConstraints& c,
     // the link in two where both halves would then be traced for sure, and are at least 0.45
     // spacings long; elsewhere the seeds it would crowd there could squeeze corner cells
     // out of the output (and topology control keeps its best round should one still do).
-    const bool add = stray == kNoSeed;
+    const bool add = stray == kNoIndex;
     if (add && (length < kShortestSplitLink * spacing.spacing() ||
                 !halves_witnessed(before, tree, added, link, curves)))
       continue;

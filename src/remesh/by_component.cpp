@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <numeric>
 
@@ -42,20 +41,19 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
   const std::vector<EdgeUse> uses = edge_uses(mesh);
   for (std::size_t k = 1; k < uses.size(); ++k)
     if (uses[k].edge == uses[k - 1].edge) sets.unite(uses[k].triangle(), uses[k - 1].triangle());
-  constexpr Index kNone = std::numeric_limits<Index>::max();
-  std::vector<Index> component_of_root(mesh.triangles.size(), kNone);
+  std::vector<Index> component_of_root(mesh.triangles.size(), kNoIndex);
   std::vector<std::vector<Index>> triangles_of;  // per component, in input order
   for (Index t = 0; t < mesh.triangles.size(); ++t) {
     Index& c = component_of_root[sets.find(t)];
-    if (c == kNone) {
+    if (c == kNoIndex) {
       c = static_cast<Index>(triangles_of.size());
       triangles_of.emplace_back();
     }
     triangles_of[c].push_back(t);
   }
   std::vector<Component> parts(triangles_of.size());
-  std::vector<Index> owner(mesh.vertices.size(), kNone);  // the last component that has it
-  std::vector<Index> local(mesh.vertices.size());         // and its id there
+  std::vector<Index> owner(mesh.vertices.size(), kNoIndex);  // the last component that has it
+  std::vector<Index> local(mesh.vertices.size());            // and its id there
   std::vector<Index> components_at(mesh.vertices.size(), 0);
   for (Index c = 0; c < parts.size(); ++c) {
     Component& part = parts[c];
@@ -131,8 +129,8 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
                                                const std::vector<Component>& parts,
                                                const RemeshSettings& settings) {
   std::vector<RemeshSettings> all(parts.size(), settings);
-  constexpr Index kNone = std::numeric_limits<Index>::max();  // on no component with area
-  std::vector<Index> component(mesh.vertices.size(), kNone), local(mesh.vertices.size());
+  // kNoIndex: on no component with area
+  std::vector<Index> component(mesh.vertices.size(), kNoIndex), local(mesh.vertices.size());
   std::vector<bool> pinch(mesh.vertices.size(), false);
   for (Index c = 0; c < parts.size(); ++c) {
     for (Index v = 0; v < parts[c].input_vertex.size(); ++v) {
@@ -173,15 +171,16 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
   for (const Edge& e : settings.features.user_edges) {
     // The component of its triangles: that of an end in one component only, or else (both ends
     // where components touch) the one that has the edge.
-    Index home = !pinch[e[0]] ? component[e[0]] : !pinch[e[1]] ? component[e[1]] : kNone;
-    for (Index c = 0; home == kNone && c < parts.size(); ++c)
+    Index home = !pinch[e[0]] ? component[e[0]] : !pinch[e[1]] ? component[e[1]] : kNoIndex;
+    for (Index c = 0; home == kNoIndex && c < parts.size(); ++c)
       if (has_edge(c, e[0], e[1])) home = c;
-    if (home == kNone) continue;  // on a component without area: nothing to keep
+    if (home == kNoIndex) continue;  // on a component without area: nothing to keep
     const Index a = local_in(home, e[0]), b = local_in(home, e[1]);
     all[home].features.user_edges.push_back({std::min(a, b), std::max(a, b)});
   }
   for (const Index v : settings.features.user_corners)
-    if (component[v] != kNone && !pinch[v])  // a vertex where components touch is a corner anyway
+    if (component[v] != kNoIndex &&
+        !pinch[v])  // a vertex where components touch is a corner anyway
       all[component[v]].features.user_corners.push_back(local[v]);
   if (!settings.sizing.edge_lengths.empty())
     for (Index c = 0; c < parts.size(); ++c)

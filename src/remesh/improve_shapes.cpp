@@ -73,8 +73,6 @@ constexpr double kSearchBelow = 0.7;
 // right triangles, 35°), each collapse could otherwise find one better and take it.
 constexpr std::size_t kCollapsesPer = 100;
 
-constexpr Index kNoVertex = std::numeric_limits<Index>::max();
-
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const TriangleShape s = triangle_shape(a, b, c);
   return s.min_angle < kMinAngleDeg || s.quality < kMinQuality;
@@ -459,7 +457,7 @@ class ShapeImprover {
     std::vector<Vec3> from;
     WorstShape before;
   };
-  Region region_at(std::span<const Index> core, Index left_out = kNoVertex) const {
+  Region region_at(std::span<const Index> core, Index left_out = kNoIndex) const {
     Region r{ring(core), {}, {}};
     for (Index v : r.vertices) r.before.add(star_shape(v));
     std::erase(r.vertices, left_out);
