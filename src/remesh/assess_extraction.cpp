@@ -18,7 +18,7 @@ namespace {
 // link left to the seeds (one floor, 15°) was measured on the corpus (57 meshes at 1k/5k/10k,
 // 2k/3k with --seed 2, adaptive 2k): θmin better on 4 runs, worse on 1, but the curves get seeds
 // closer than their spacing, and the average triangle worse (spool.off at 5k: θmin_ave 51.51° to
-// 51.02°; adaptive at 2k, seeds 1-3: 49.0° to 48.1°).
+// 51.02°; and adaptive at 2k, seeds 1-3: 49.0° to 48.1°).
 constexpr double kWellShapedFlipDeg = 30;
 // A flip that would leave a smaller angle than this is not made: below it, a crease traced
 // exactly costs a sliver where the untraced one is a few tenths of a percent off (and where the
