@@ -166,11 +166,11 @@ class Crossings {
 // New surface seeds at the nearest surface points of `points`, unless a seed is there already,
 // or one of those added since `first_new` is nearer than a millionth of the spacing: two pieces'
 // farthest points may be the same RVD vertex computed from two cells, a rounding apart, and two
-// such seeds made femur.off at 10k a triangle of area 1e-22. Returns how many came in.
+// such seeds made femur.off at 10k a triangle of area 1e-22. `occupied`: the positions of all
+// the seeds, to which those that come in are added. Returns how many came in.
 std::size_t add_surface_seeds(const MendContext& m, const std::vector<Vec3>& points,
                               std::vector<Vec3>& seeds, SeedConstraints& constraints,
-                              std::size_t first_new) {
-  std::set<Vec3> occupied(seeds.begin(), seeds.end());
+                              std::size_t first_new, std::set<Vec3>& occupied) {
   const double apart = 1e-6 * m.spacing.spacing();
   std::size_t added = 0;
   for (const Vec3& point : points) {
@@ -247,8 +247,11 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
     changed += mended;
   }
   const std::size_t first_new = seeds.size();
-  const std::size_t islands = add_surface_seeds(m, found.islands, seeds, constraints, first_new);
-  const std::size_t refined = add_surface_seeds(m, found.refinement, seeds, constraints, first_new);
+  std::set<Vec3> occupied(seeds.begin(), seeds.end());  // the seeds' positions, and each new one
+  const std::size_t islands =
+      add_surface_seeds(m, found.islands, seeds, constraints, first_new, occupied);
+  const std::size_t refined =
+      add_surface_seeds(m, found.refinement, seeds, constraints, first_new, occupied);
   report.islands += islands;
   report.refined += refined;
   return changed + islands + refined;
