@@ -23,6 +23,11 @@
 //     the cells' pieces, paper §4.4: what every polishing and topology round runs) on icosphere
 //     level 5 (20,480 faces) with N random seeds, against an RVD pass with integrals on the same
 //     seeds (extraction_over_pass).
+//   BM_ExtractionAfterSeedsAdded/N: that extraction again after 1% more seeds came in, as a round
+//     of topology control adds them: with the TraversalMemory of the extraction before
+//     (remembered_s: lists carried over, the triangles no new seed reaches replayed) against one
+//     made afresh (fresh_s); remembered_over_fresh and replayed_pct (issue 18: topology control
+//     works locally).
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -239,6 +244,45 @@ void BM_MultiNerveExtraction(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MultiNerveExtraction)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+void BM_ExtractionAfterSeedsAdded(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<Vec3> before = sample_surface(mesh, n, 1);
+  std::vector<Vec3> after = before;
+  const std::vector<Vec3> added = sample_surface(mesh, n / 100, 2);
+  after.insert(after.end(), added.begin(), added.end());
+  // An extraction of `seeds`, the diagram's build (kd-tree, lists) included; with `memory` if
+  // given. Returns its time and the triangles it replayed.
+  const auto extract = [&](const std::vector<Vec3>& seeds, TraversalMemory* memory) {
+    const auto start = Clock::now();
+    const RestrictedVoronoiDiagram rvd = memory ? RestrictedVoronoiDiagram(mesh, seeds, *memory)
+                                                : RestrictedVoronoiDiagram(mesh, seeds);
+    MultiNerveBuilder rdt(rvd);
+    PolygonSink* sinks[] = {&rdt};
+    const TraversalStats stats = memory ? rvd.traverse(sinks, *memory) : rvd.traverse(sinks);
+    benchmark::DoNotOptimize(rdt.result().triangles.size());
+    return std::pair(seconds(start), stats.triangles_replayed);
+  };
+  for (auto _ : state) {
+    TraversalMemory memory;
+    extract(before, &memory);
+    const double fresh_s = extract(after, nullptr).first;
+    const auto [remembered_s, replayed] = extract(after, &memory);
+    state.SetIterationTime(fresh_s + remembered_s);
+    state.counters["fresh_s"] = fresh_s;
+    state.counters["remembered_s"] = remembered_s;
+    state.counters["remembered_over_fresh"] = remembered_s / fresh_s;
+    state.counters["replayed_pct"] =
+        100.0 * static_cast<double>(replayed) / static_cast<double>(mesh.triangles.size());
+  }
+}
+BENCHMARK(BM_ExtractionAfterSeedsAdded)
     ->Arg(10'000)
     ->Arg(100'000)
     ->UseManualTime()

@@ -106,29 +106,30 @@ TEST(DefectSeeds, SplitCellsGetSeedsNearTheDefectsAtTheirFarthestVertices) {
   // Refinement near the defects: the far piece's vertex farthest from its seed, which is in the
   // seed's cell (no seed nearer) and farther from it than the piece's centroid.
   const DefectSeeds near =
-      defect_seeds(plate, seeds, {{0, 1, 2}}, false, SplitCells::near_triangles, nullptr);
+      defect_seeds(plate, seeds, {{0, 1, 2}}, false, SplitCells::near_triangles, nullptr, nullptr);
   ASSERT_EQ(near.islands.size(), 1u);
   const Vec3 p = near.islands[0];
   EXPECT_NEAR(p.z, -0.01, 1e-12);
   for (const Vec3& s : seeds) EXPECT_LE(distance(p, seeds[0]), distance(p, s) + 1e-12);
   EXPECT_GT(distance(p, seeds[0]), distance(islands[0].centroid, seeds[0]) + 0.1);
   // Everywhere, as where no defect shows where.
-  EXPECT_EQ(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, nullptr)
+  EXPECT_EQ(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, nullptr, nullptr)
                 .islands.size(),
             1u);
   // A split cell far from the only defect is left alone.
-  EXPECT_TRUE(defect_seeds(plate, seeds, {{9, 10, 11}}, false, SplitCells::near_triangles, nullptr)
-                  .islands.empty());
+  EXPECT_TRUE(
+      defect_seeds(plate, seeds, {{9, 10, 11}}, false, SplitCells::near_triangles, nullptr, nullptr)
+          .islands.empty());
   // None where the piece reaches a crossing of the input's sheets (here a triangle standing for
   // one, over the far piece).
   const TriangleMesh crossing{{{-0.1, -0.1, -0.01}, {0.1, -0.1, -0.01}, {0, 0.1, -0.01}},
                               {{0, 1, 2}}};
   const SurfaceProjector at(crossing);
-  EXPECT_TRUE(
-      defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, &at).islands.empty());
+  EXPECT_TRUE(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, &at, nullptr)
+                  .islands.empty());
   // The paper's rule, exhaustive: every split cell, at its extra piece's centroid.
   const DefectSeeds all = defect_seeds(plate, seeds, {{9, 10, 11}}, false,
-                                       SplitCells::at_centroids_everywhere, nullptr);
+                                       SplitCells::at_centroids_everywhere, nullptr, nullptr);
   ASSERT_EQ(all.islands.size(), 1u);
   EXPECT_EQ(all.islands[0], islands[0].centroid);
 }
@@ -373,7 +374,9 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
   const PolishSettings polish{0, 0};
   // The scene is set up unpolished; topology control polishes as remesh does.
   const CurveSpacing spacing(0.25);
-  const MendContext context{box, topology, features, curves, projector, placement, spacing, {}};
+  TraversalMemory traversals;
+  const MendContext context{box,       topology, features, curves,    projector,
+                            placement, spacing,  {},       traversals};
   // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's
   // length off the crease: it cuts the link, and flipping the link in would leave 26.6°. The
   // links are tried from the middle of the list on, until one where that flip can be made.
@@ -396,7 +399,7 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
     const Vec3 off = seeds[stray] - middle;
     const Vec3 across = off - dot(off, b - a) / dot(b - a, b - a) * (b - a);
     seeds[stray] = middle + 0.25 * norm(b - a) / norm(across) * across;
-    output = extract_polished(box, seeds, placement, polish);
+    output = extract_polished(box, seeds, placement, polish, traversals);
     // Only a flip that leaves a sliver (under 30°, at least 15°) makes it: well-shaped flips
     // are as good as moving seeds, and topology control leaves those links to them.
     TriangleMesh well_shaped = output.mesh, sliver = output.mesh;

@@ -55,6 +55,7 @@ struct TraversalStats {
   std::size_t exact_fallbacks = 0;  // decisions the floating-point filter left to exact arithmetic
   std::size_t perturbed_ties = 0;   // exact ties decided by the symbolic perturbation
   std::size_t radius_searches = 0;  // cells whose stored nearest seeds did not reach far enough
+  std::size_t triangles_replayed = 0;  // triangles whose polygons came from a TraversalMemory
 };
 
 struct RvdBuildTimes {
@@ -80,6 +81,24 @@ class NeighborCache {
   std::unique_ptr<State> state_;
 };
 
+// What one traversal leaves for the next over the same surface (issue 18, issue 19 item 4:
+// topology control and polishing work locally): every triangle's polygons, and the seeds they
+// were cut for. A traversal given it clips again only the triangles that a seed which moved, came
+// or went may reach, and hands on the others' polygons as they were: the sinks get the same
+// polygons, in the same order, as without it. Empty until a traversal fills it; one per surface.
+class TraversalMemory {
+ public:
+  TraversalMemory();
+  ~TraversalMemory();
+  TraversalMemory(const TraversalMemory&) = delete;
+  TraversalMemory& operator=(const TraversalMemory&) = delete;
+
+ private:
+  friend class RestrictedVoronoiDiagram;
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 class RestrictedVoronoiDiagram {
  public:
   // Builds a kd-tree over the seeds and each seed's list of nearest seeds. Throws
@@ -90,6 +109,11 @@ class RestrictedVoronoiDiagram {
   // for the next.
   RestrictedVoronoiDiagram(const TriangleMesh& surface, std::vector<Vec3> seeds,
                            NeighborCache& cache);
+  // The same, with the lists that `memory` holds from its last diagram carried over for the
+  // seeds that did not change since, and this diagram's left there; traverse with the same
+  // memory.
+  RestrictedVoronoiDiagram(const TriangleMesh& surface, std::vector<Vec3> seeds,
+                           TraversalMemory& memory);
   ~RestrictedVoronoiDiagram();
   RestrictedVoronoiDiagram(RestrictedVoronoiDiagram&&) noexcept;
   RestrictedVoronoiDiagram& operator=(RestrictedVoronoiDiagram&&) noexcept;
@@ -98,6 +122,9 @@ class RestrictedVoronoiDiagram {
   // of zero area (exactly collinear corners) have no polygons.
   TraversalStats traverse(std::span<PolygonSink* const> sinks) const;
   TraversalStats traverse(PolygonSink& sink) const;
+  // The same, replaying from `memory` the triangles no changed seed reaches, and leaving this
+  // traversal's polygons there for the next.
+  TraversalStats traverse(std::span<PolygonSink* const> sinks, TraversalMemory& memory) const;
 
   const TriangleMesh& surface() const;
   const std::vector<Vec3>& seeds() const;

@@ -207,16 +207,17 @@ void local_lloyd(const TriangleMesh& patch, const std::vector<double>& density,
 }  // namespace
 
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
-                                const CvtObjective& objective, const PolishSettings& settings) {
+                                const CvtObjective& objective, const PolishSettings& settings,
+                                TraversalMemory& memory) {
   PolishedOutput out;
   std::vector<Index> moving;
   for (int round = 0;; ++round) {
-    const RestrictedVoronoiDiagram rvd(surface, seeds);
+    const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
     MultiNerveBuilder rdt(rvd);
     CellCoverage coverage;
     InterruptSink stop(objective.interrupt());
     PolygonSink* sinks[] = {&rdt, &coverage, &stop};
-    rvd.traverse(sinks);
+    rvd.traverse(sinks, memory);
     out.mesh = rdt.result();
     out.vertex_seed = rdt.vertex_seed();
     // Polishing moves seeds: it looks at the triangles between seeds only, not at those of the

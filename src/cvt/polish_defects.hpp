@@ -32,8 +32,10 @@ struct PolishedOutput {
 // rounds are left and the last round did not already move every seed around them, moves the surface
 // seeds around them by local Lloyd steps and triangulates again. Moved seeds stay on the
 // surface (objective.constrained); feature seeds do not move. The result does not depend on
-// the thread count.
+// the thread count. Each triangulation replays from `memory` what the last traversal of
+// `surface` there left unchanged, and leaves its own for the next.
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
-                                const CvtObjective& objective, const PolishSettings& settings);
+                                const CvtObjective& objective, const PolishSettings& settings,
+                                TraversalMemory& memory);
 
 }  // namespace cvtmesh

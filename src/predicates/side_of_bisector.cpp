@@ -287,19 +287,26 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
 
 }  // namespace
 
-RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVertex& b, Index j) {
+RvdVertex vertex_with_symbols(const ClipFrame& f, std::array<std::int32_t, 2> symbols) {
   RvdVertex v;
-  const std::int32_t shared = common_symbol(a, b), k = static_cast<std::int32_t>(j);
-  // Two bisectors in a fixed order: their crossing, and its rounding, do not depend on which cut
-  // first (the bisectors' order differs with the candidate lists, see NeighborCache).
-  v.symbols =
-      shared >= 0 ? std::array{std::min(shared, k), std::max(shared, k)} : std::array{shared, k};
+  v.symbols = symbols;
   const Definition def = define(v);
-  const Vec3& xi = f.seeds[f.cell];
+  if (def.bisectors == 0) return corner_vertex(f, def.corner);
   if (def.bisectors == 1)
     edge_crossing(f, def, v);
   else
     facet_crossing(f, def, v);
+  return v;
+}
+
+RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVertex& b, Index j) {
+  const std::int32_t shared = common_symbol(a, b), k = static_cast<std::int32_t>(j);
+  // Two bisectors in a fixed order: their crossing, and its rounding, do not depend on which cut
+  // first (the bisectors' order differs with the candidate lists, see NeighborCache).
+  RvdVertex v =
+      vertex_with_symbols(f, shared >= 0 ? std::array{std::min(shared, k), std::max(shared, k)}
+                                         : std::array{shared, k});
+  const Vec3& xi = f.seeds[f.cell];
   if (!std::isfinite(v.error) || !std::isfinite(v.point.x + v.point.y + v.point.z)) {
     // Nearly parallel planes: the formula is ill-conditioned. Interpolate along the segment
     // where the (approximate) side function changes sign; this position serves integration

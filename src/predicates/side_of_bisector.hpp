@@ -36,4 +36,9 @@ RvdVertex bisector_crossing(const ClipFrame& frame, const RvdVertex& a, const Rv
 // The RVD vertex at input corner k of the frame's triangle.
 RvdVertex corner_vertex(const ClipFrame& frame, int k);
 
+// The vertex of the frame's triangle and cell with these symbols, as corner_vertex or
+// bisector_crossing makes it, bit for bit, except where bisector_crossing finds the formula
+// ill-conditioned (its vertex then has an infinite error bound).
+RvdVertex vertex_with_symbols(const ClipFrame& frame, std::array<std::int32_t, 2> symbols);
+
 }  // namespace cvtmesh::predicates

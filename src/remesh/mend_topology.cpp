@@ -236,9 +236,9 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
     const SplitCells split = pinned      ? SplitCells::at_centroids_everywhere
                              : no_defect ? SplitCells::farthest_everywhere
                                          : SplitCells::near_triangles;
-    found =
-        defect_seeds(m.surface, seeds, dual,
-                     m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing);
+    found = defect_seeds(m.surface, seeds, dual,
+                         m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing,
+                         &m.traversals);
   }
   if (!a.missing.empty() && !out_of_time) {
     const std::size_t mended =
@@ -297,7 +297,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       continue;
     }
     ++report.rounds;
-    output = extract_polished(m.surface, seeds, m.placement, polish);
+    output = extract_polished(m.surface, seeds, m.placement, polish, m.traversals);
     report.polish_rounds += output.rounds;
   }
   Round best = std::move(kept).take();

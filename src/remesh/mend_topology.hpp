@@ -19,6 +19,7 @@ struct MendContext {
   const CvtObjective& placement;  // where seeds may go (see extract_polished)
   const CurveSpacing& spacing;    // target edge lengths along the curves
   PolishSettings polish;
+  TraversalMemory& traversals;  // the last traversal of `surface` (see extract_polished)
 };
 
 struct MendReport {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
+#include "cvtmesh/rvd.hpp"
 
 namespace cvtmesh {
 class SurfaceProjector;
@@ -65,9 +66,11 @@ struct DefectSeeds {
 //   handles far finer than the spacing (femur.off at 1k) that the farthest vertices leave.
 // No piece gets a seed where it reaches `crossings` (the input's triangles that cross another;
 // null: none) within its reach from its seed.
+// `memory`, if given, holds the last traversal of `surface` (see TraversalMemory).
 enum class SplitCells { near_triangles, farthest_everywhere, at_centroids_everywhere };
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
-                         SplitCells split_cells, const SurfaceProjector* crossings);
+                         SplitCells split_cells, const SurfaceProjector* crossings,
+                         TraversalMemory* memory);
 
 }  // namespace cvtmesh

@@ -228,17 +228,25 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   const auto extraction_start = Clock::now();
   CvtObjective placement(mesh, &*projector, &constraints, &*curves, &interrupt, &density);
   placement.project(seeds);
-  PolishedOutput output = extract_polished(mesh, seeds, placement, {settings.polish_rounds});
-  result.polish_rounds = output.rounds;
-  result.defects_polished = output.defects;
-  // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
-  const MendContext context{
-      mesh,           result.input_topology,   features, *curves, *projector, placement,
-      *curve_spacing, {settings.polish_rounds}};
   MendReport mends;
   const std::size_t optimized_seeds = seeds.size();  // the rounds append theirs
-  output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
-                         mends);
+  {
+    // Polishing and topology control change few seeds between triangulations: each replays the
+    // triangles that the last one left unchanged (issue 18: topology control works locally).
+    // Freed before the finishing steps.
+    TraversalMemory traversals;
+    PolishedOutput output =
+        extract_polished(mesh, seeds, placement, {settings.polish_rounds}, traversals);
+    result.polish_rounds = output.rounds;
+    result.defects_polished = output.defects;
+    // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
+    const MendContext context{
+        mesh,           result.input_topology,    features,  *curves, *projector, placement,
+        *curve_spacing, {settings.polish_rounds}, traversals};
+    output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
+                           mends);
+    result.mesh = std::move(output.mesh);
+  }
   result.polish_rounds += mends.polish_rounds;
   result.links_mended = mends.links_mended;
   result.islands_seeded = mends.islands;
@@ -246,7 +254,6 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.links_flipped = mends.links_flipped;
   result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
-  result.mesh = std::move(output.mesh);
   finish_output(result, seeds, optimized_seeds, constraints, features, *curves, *projector,
                 settings);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);

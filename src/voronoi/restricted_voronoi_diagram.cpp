@@ -19,7 +19,9 @@
 #include "geometry/point_tree.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "system/elapsed.hpp"
+#include "voronoi/polygon_reach.hpp"
 #include "voronoi/seed_neighbors.hpp"
+#include "voronoi/traversal_record.hpp"
 
 namespace cvtmesh {
 
@@ -36,11 +38,16 @@ constexpr std::size_t kChunkSize = 1024;
 constexpr std::size_t kPolygonsPerChunk = 2048;
 
 // Triangles per chunk, from the polygon count of a well-spread tessellation: each triangle, plus
-// about 4 more per seed (a cell of about 6 sides spans several triangles' edges).
+// about 4 more per seed (a cell of about 6 sides spans several triangles' edges). Past 64, a
+// multiple of 64, so that a few seeds more or less seldom change it: a traversal then takes over
+// the chunks of its TraversalMemory's record that no changed seed reaches, instead of copying
+// them. (A power of two would change it more seldom still, but chunks just past one, whose
+// sinks' arrays then grow to twice what they hold, made igea's peak memory 6% higher.)
 std::size_t triangles_per_chunk(std::size_t triangles, std::size_t seeds) {
+  constexpr std::size_t kStep = 64;
   const double polygons_per_triangle = 1 + 4 * static_cast<double>(seeds) / triangles;
-  return std::max<std::size_t>(1,
-                               static_cast<std::size_t>(kPolygonsPerChunk / polygons_per_triangle));
+  const auto size = static_cast<std::size_t>(kPolygonsPerChunk / polygons_per_triangle);
+  return size < kStep ? std::max<std::size_t>(1, size) : size / kStep * kStep;
 }
 
 // Nearest seeds stored per seed: enough for nearly every polygon of a centroidal tessellation
@@ -63,7 +70,7 @@ struct Scratch {
   std::deque<Index> queue;
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
-  std::size_t polygons = 0, cells_clipped = 0;
+  std::size_t polygons = 0, cells_clipped = 0, replayed = 0;
   std::vector<Index> spare;  // candidates from a radius search (Impl::for_candidates)
   std::size_t radius_searches = 0;
 };
@@ -77,9 +84,10 @@ struct RestrictedVoronoiDiagram::Impl {
   std::unique_ptr<PointTree> nearest;
 
   // Takes the seeds, builds the kd-tree and the lists (from `cache` if it has them for seeds
-  // that moved little, then left there).
+  // that moved little, or from `memory`'s for the seeds that did not change; then left there).
   void build(const TriangleMesh& on, std::vector<Vec3> points,
-             std::unique_ptr<NeighborCache::State>* cache);
+             std::unique_ptr<NeighborCache::State>* cache,
+             std::unique_ptr<TraversalMemory::State>* memory = nullptr);
 
   // Zero-area triangles (exact test) have no facet plane, and nothing to clip.
   bool flat(std::size_t t) const {
@@ -88,6 +96,11 @@ struct RestrictedVoronoiDiagram::Impl {
     return CGAL::collinear(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z));
   }
   RvdBuildTimes times;
+
+  // Every triangle's polygons to the sinks: clipped, or, where `old` holds them still, replayed;
+  // and to `recorder`, if given, which takes over the chunks of `old` that stay as they were.
+  TraversalStats traverse(std::span<PolygonSink* const> sinks, TraversalRecord* old,
+                          PolygonRecorder* recorder) const;
 
   // Clips `polygon` (in the frame's cell) by the bisector with seed j. Returns whether the
   // bisector cut it, i.e. some vertex lies on j's side.
@@ -167,7 +180,7 @@ struct RestrictedVoronoiDiagram::Impl {
     const RvdVertex corner = predicates::corner_vertex(frame, 0);
     for (;;) {
       const Index i = frame.cell;
-      const double reach2 = reach(seeds[i], std::span(&corner, 1));
+      const double reach2 = squared_reach(seeds[i], std::span(&corner, 1));
       for_candidates(
           i, s, [&] { return reach2; },
           [&](Index j) {
@@ -177,16 +190,6 @@ struct RestrictedVoronoiDiagram::Impl {
           });
       if (frame.cell == i) return i;
     }
-  }
-
-  // Largest distance from the cell's seed to the polygon, rounded up past every vertex's error.
-  double reach(const Vec3& seed, std::span<const RvdVertex> polygon) const {
-    double r2 = 0;
-    for (const RvdVertex& v : polygon) {
-      const double r = norm(v.point - seed) + std::sqrt(3.0) * v.error;
-      r2 = std::max(r2, r * r);
-    }
-    return r2 * (1 + 1e-10);
   }
 
   // A ball that contains the polygon: centred at its vertex average, radius rounded up past
@@ -244,29 +247,18 @@ struct RestrictedVoronoiDiagram::Impl {
       ++s.cells_clipped;
       s.polygon.clear();
       for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
-      double reach2 = reach(seeds[i], s.polygon);
+      double reach2 = squared_reach(seeds[i], s.polygon);
       Ball ball = bounding_ball(s.polygon);
       for_candidates(
           i, s, [&] { return reach2; },
           [&](Index j) {
             if (beyond_bisector(ball, seeds[i], seeds[j]) || !clip(frame, j, s)) return true;
             if (s.polygon.empty()) return false;
-            reach2 = reach(seeds[i], s.polygon);
+            reach2 = squared_reach(seeds[i], s.polygon);
             ball = bounding_ball(s.polygon);
             return true;
           });
       if (s.polygon.size() < 3) continue;
-      // Only the seeds across the final polygon's edges have cells on this triangle: every
-      // bisector symbol of a vertex names the seed across one of its two edges. (A seed whose
-      // bisector cut an earlier, larger polygon may own nothing here; queueing it would clip
-      // the whole triangle again, and on a coarse input that is thousands of cells wide.)
-      for (const RvdVertex& v : s.polygon)
-        for (const std::int32_t j : v.symbols)
-          if (j >= 0 && s.stamp[static_cast<Index>(j)] != stamp) {
-            s.stamp[static_cast<Index>(j)] = stamp;
-            s.queue.push_back(static_cast<Index>(j));
-          }
-      ++s.polygons;
       // From its least vertex by symbols: the same polygon, and the same sums over it, whatever
       // order the bisectors cut in (it differs with the candidate lists, see NeighborCache).
       std::rotate(s.polygon.begin(),
@@ -274,6 +266,18 @@ struct RestrictedVoronoiDiagram::Impl {
                       s.polygon.begin(), s.polygon.end(),
                       [](const RvdVertex& a, const RvdVertex& b) { return a.symbols < b.symbols; }),
                   s.polygon.end());
+      // Only the seeds across the final polygon's edges have cells on this triangle: every
+      // bisector symbol of a vertex names the seed across one of its two edges. (A seed whose
+      // bisector cut an earlier, larger polygon may own nothing here; queueing it would clip
+      // the whole triangle again, and on a coarse input that is thousands of cells wide.) Queued
+      // from the rotated polygon, so that the cells come in the same order whatever the lists.
+      for (const RvdVertex& v : s.polygon)
+        for (const std::int32_t j : v.symbols)
+          if (j >= 0 && s.stamp[static_cast<Index>(j)] != stamp) {
+            s.stamp[static_cast<Index>(j)] = stamp;
+            s.queue.push_back(static_cast<Index>(j));
+          }
+      ++s.polygons;
       const RvdPolygon polygon{i, static_cast<Index>(t), s.polygon};
       for (PolygonSink* sink : sinks) sink->polygon(chunk, polygon);
     }
@@ -301,8 +305,15 @@ RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
   impl_->build(surface, std::move(seeds), &cache.state_);
 }
 
+RestrictedVoronoiDiagram::RestrictedVoronoiDiagram(const TriangleMesh& surface,
+                                                   std::vector<Vec3> seeds, TraversalMemory& memory)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->build(surface, std::move(seeds), nullptr, &memory.state_);
+}
+
 void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<Vec3> points,
-                                           std::unique_ptr<NeighborCache::State>* cache) {
+                                           std::unique_ptr<NeighborCache::State>* cache,
+                                           std::unique_ptr<TraversalMemory::State>* memory) {
   surface = &on;
   seeds = std::move(points);
   reject_non_finite_seeds(seeds);
@@ -339,7 +350,14 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
       times.neighbors_reused = true;
     }
   }
-  if (!times.neighbors_reused) {
+  if (memory) {
+    if (!*memory) *memory = std::make_unique<TraversalMemory::State>();
+    TraversalMemory::State& m = **memory;
+    neighbors = carried_over(m.lists, m.lists_at, seeds, *nearest, kStoredNeighbors);
+    times.neighbors_reused = !m.lists_at.empty();
+    m.lists = neighbors;
+    m.lists_at = seeds;
+  } else if (!times.neighbors_reused) {
     neighbors = nearest_neighbors(seeds, *nearest, kStoredNeighbors);
     if (cache) {
       if (!state) state = (*cache = std::make_unique<NeighborCache::State>()).get();
@@ -374,36 +392,86 @@ TraversalStats RestrictedVoronoiDiagram::traverse(PolygonSink& sink) const {
 }
 
 TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> sinks) const {
-  const std::size_t triangles = impl_->surface->triangles.size();
-  const std::size_t chunk_size = triangles_per_chunk(triangles, impl_->seeds.size());
+  return impl_->traverse(sinks, nullptr, nullptr);
+}
+
+TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> sinks,
+                                                  TraversalMemory& memory) const {
+  const TriangleMesh& surface = *impl_->surface;
+  if (!memory.state_) memory.state_ = std::make_unique<TraversalMemory::State>();
+  // Taken out: a traversal that does not run to its end leaves the memory without a record.
+  TraversalRecord old = std::exchange(memory.state_->record, {});
+  PolygonRecorder recorder(surface, impl_->seeds,
+                           triangles_per_chunk(surface.triangles.size(), impl_->seeds.size()));
+  const TraversalStats stats =
+      impl_->traverse(sinks, old.covers(surface) ? &old : nullptr, &recorder);
+  memory.state_->record = std::move(recorder).take();
+  return stats;
+}
+
+TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* const> sinks,
+                                                        TraversalRecord* old,
+                                                        PolygonRecorder* recorder) const {
+  const std::size_t triangles = surface->triangles.size();
+  const std::size_t chunk_size = triangles_per_chunk(triangles, seeds.size());
   const std::size_t chunks = (triangles + chunk_size - 1) / chunk_size;
-  for (PolygonSink* sink : sinks) sink->begin(chunks);
+  // The triangles to clip: all of them, or those whose polygons `old` does not hold still.
+  const std::vector<char> stale = old ? old->stale_triangles(seeds) : std::vector<char>{};
+  const auto clipped = [&](std::size_t t) { return !old || stale[t]; };
+  // Chunked alike, each chunk of `old` serves the same chunk here only: one that is as it was
+  // goes to the recorder whole, the others are freed once done (the others' polygons go to the
+  // recorder one by one), so that the two records are not held whole at once.
+  const bool adoptable = old && recorder && old->chunk_size() == chunk_size;
+  std::vector<PolygonSink*> recorded(sinks.begin(), sinks.end());
+  if (recorder) recorded.push_back(recorder);
+  for (PolygonSink* sink : recorded) sink->begin(chunks);
   tbb::enumerable_thread_specific<Scratch> scratch([&] {
     Scratch s;
-    s.stamp.assign(impl_->seeds.size(), 0);
+    s.stamp.assign(seeds.size(), 0);
     return s;
   });
-  // Walks start from the previous vertex's cell (vertices in a file are mostly in spatial
-  // order), or from the kd-tree at each chunk's start: alike on any thread count.
-  const std::vector<Vec3>& vertices = impl_->surface->vertices;
-  std::vector<Index> owners(vertices.size());
-  tbb::parallel_for(
-      std::size_t{0}, (vertices.size() + kChunkSize - 1) / kChunkSize, [&](std::size_t chunk) {
-        Scratch& s = scratch.local();
-        const std::size_t begin = chunk * kChunkSize;
-        const std::size_t end = std::min(vertices.size(), begin + kChunkSize);
-        for (std::size_t v = begin; v < end; ++v) {
-          const Index from = v == begin ? (*impl_->nearest)(vertices[v]) : owners[v - 1];
-          owners[v] = impl_->owner_of(vertices[v], from, s);
-        }
-      });
+  // The cells of the clipped triangles' corners. Walks start from the previous such vertex's
+  // cell (vertices in a file are mostly in spatial order), or from the kd-tree at each chunk's
+  // first: alike on any thread count.
+  const std::vector<Vec3>& vertices = surface->vertices;
+  std::vector<char> needed(vertices.size(), old ? 0 : 1);
+  if (old)
+    for (std::size_t t = 0; t < triangles; ++t)
+      if (stale[t])
+        for (const Index v : surface->triangles[t]) needed[v] = 1;
+  std::vector<Index> owners(vertices.size(), kNoIndex);
+  tbb::parallel_for(std::size_t{0}, (vertices.size() + kChunkSize - 1) / kChunkSize,
+                    [&](std::size_t chunk) {
+                      Scratch& s = scratch.local();
+                      const std::size_t begin = chunk * kChunkSize;
+                      const std::size_t end = std::min(vertices.size(), begin + kChunkSize);
+                      Index last = kNoIndex;
+                      for (std::size_t v = begin; v < end; ++v) {
+                        if (!needed[v]) continue;
+                        const Index from = last == kNoIndex ? (*nearest)(vertices[v]) : last;
+                        last = owners[v] = owner_of(vertices[v], from, s);
+                      }
+                    });
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
-    const std::size_t end = std::min(triangles, (chunk + 1) * chunk_size);
-    for (std::size_t t = chunk * chunk_size; t < end; ++t)
-      if (!impl_->flat(t)) impl_->clip_triangle(t, chunk, sinks, owners, s);
+    const std::size_t begin = chunk * chunk_size, end = std::min(triangles, begin + chunk_size);
+    const bool kept = adoptable && std::none_of(stale.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                stale.begin() + static_cast<std::ptrdiff_t>(end),
+                                                [](char c) { return c != 0; });
+    for (std::size_t t = begin; t < end; ++t) {
+      if (!clipped(t)) {
+        s.polygons += old->replay(t, chunk, kept ? sinks : recorded, s.clipped);
+        ++s.replayed;
+      } else if (!flat(t)) {
+        clip_triangle(t, chunk, recorded, owners, s);
+      }
+    }
+    if (kept)
+      recorder->adopt(chunk, *old);
+    else if (adoptable)
+      old->release(chunk);
   });
-  for (PolygonSink* sink : sinks) sink->end();
+  for (PolygonSink* sink : recorded) sink->end();
   TraversalStats stats;
   for (const Scratch& s : scratch) {
     stats.polygons += s.polygons;
@@ -412,6 +480,7 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
     stats.exact_fallbacks += s.counters.exact_fallbacks;
     stats.perturbed_ties += s.counters.perturbed_ties;
     stats.radius_searches += s.radius_searches;
+    stats.triangles_replayed += s.replayed;
   }
   return stats;
 }

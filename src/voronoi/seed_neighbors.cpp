@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include "cvtmesh/errors.hpp"
@@ -50,6 +51,24 @@ void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> 
             [&](Index a, Index b) { return std::pair(d2(a), a) < std::pair(d2(b), b); });
 }
 
+namespace {
+
+// Seed s's k nearest other seeds into `list`, nearest first, and the squared radius within which
+// they are all the seeds there are. `near`: scratch.
+double search_list(const std::vector<Vec3>& seeds, const PointTree& tree, Index s, std::size_t k,
+                   std::vector<Index>& near, std::span<Index> list) {
+  tree.nearest(seeds[s], k + 1, near);  // s itself is among them: seeds are distinct
+  near.erase(std::remove(near.begin(), near.end(), s), near.end());
+  near.resize(k);
+  sort_by_distance(seeds, s, near);
+  std::copy(near.begin(), near.end(), list.begin());
+  // Every other seed is at least as far as the last (up to the distances' rounding).
+  if (k == 0 || k + 1 >= seeds.size()) return std::numeric_limits<double>::infinity();
+  return kRoundedDown * dot(seeds[near[k - 1]] - seeds[s], seeds[near[k - 1]] - seeds[s]);
+}
+
+}  // namespace
+
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
                                 std::size_t k) {
   k = std::min(k, seeds.size() - 1);
@@ -57,21 +76,59 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
   n.offsets.resize(seeds.size() + 1);
   for (std::size_t s = 0; s <= seeds.size(); ++s) n.offsets[s] = s * k;
   n.ids.resize(seeds.size() * k);
-  n.complete2.assign(seeds.size(), std::numeric_limits<double>::infinity());
+  n.complete2.resize(seeds.size());
   tbb::enumerable_thread_specific<std::vector<Index>> found;
   tbb::parallel_for(
       tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
-        std::vector<Index>& near = found.local();
+        for (Index s = r.begin(); s < r.end(); ++s)
+          n.complete2[s] =
+              search_list(seeds, tree, s, k, found.local(), std::span(n.ids).subspan(s * k, k));
+      });
+  return n;
+}
+
+SeedNeighbors carried_over(const SeedNeighbors& previous, const std::vector<Vec3>& was,
+                           const std::vector<Vec3>& seeds, const PointTree& tree, std::size_t k) {
+  k = std::min(k, seeds.size() - 1);
+  std::vector<char> changed(std::max(was.size(), seeds.size()), 1);
+  std::vector<Vec3> arrived;  // where the changed seeds are now
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    if (s < was.size() && seeds[s] == was[s])
+      changed[s] = 0;
+    else
+      arrived.push_back(seeds[s]);
+  }
+  std::optional<PointTree> near_arrived;
+  if (!arrived.empty()) near_arrived.emplace(arrived);
+  const auto kept = [&](Index j) { return !changed[j]; };
+  SeedNeighbors n;
+  n.offsets.assign(seeds.size() + 1, 0);
+  for (Index s = 0; s < seeds.size(); ++s) {
+    const std::span<const Index> list = changed[s] ? std::span<const Index>{} : previous.of(s);
+    n.offsets[s + 1] =
+        n.offsets[s] + (changed[s] ? k : std::count_if(list.begin(), list.end(), kept));
+  }
+  n.ids.resize(n.offsets.back());
+  n.complete2.resize(seeds.size());
+  tbb::enumerable_thread_specific<std::vector<Index>> found;
+  tbb::parallel_for(
+      tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
         for (Index s = r.begin(); s < r.end(); ++s) {
-          tree.nearest(seeds[s], k + 1, near);  // s itself is among them: seeds are distinct
-          near.erase(std::remove(near.begin(), near.end(), s), near.end());
-          near.resize(k);
-          sort_by_distance(seeds, s, near);
-          std::copy(near.begin(), near.end(), n.ids.begin() + static_cast<std::ptrdiff_t>(s * k));
-          // Every other seed is at least as far as the last (up to the distances' rounding).
-          if (k > 0 && k + 1 < seeds.size())
-            n.complete2[s] =
-                kRoundedDown * dot(seeds[near[k - 1]] - seeds[s], seeds[near[k - 1]] - seeds[s]);
+          const std::span<Index> list(n.ids.data() + n.offsets[s], n.ids.data() + n.offsets[s + 1]);
+          if (changed[s]) {
+            n.complete2[s] = search_list(seeds, tree, s, k, found.local(), list);
+            continue;
+          }
+          // Still nearest first; every seed within the old radius that did not change is there,
+          // and a seed that changed is not, so the radius ends at the nearest of those.
+          const std::span<const Index> old = previous.of(s);
+          std::copy_if(old.begin(), old.end(), list.begin(), kept);
+          double c = previous.complete2[s];
+          if (near_arrived) {
+            const Vec3& a = arrived[(*near_arrived)(seeds[s])];
+            c = std::min(c, kRoundedDown * dot(a - seeds[s], a - seeds[s]));
+          }
+          n.complete2[s] = c;
         }
       });
   return n;

@@ -37,6 +37,14 @@ void reject_identical_seeds(const std::vector<Vec3>& seeds);
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
                                 std::size_t k);
 
+// The lists of `previous`, made for the seeds at `was`, for `seeds` of which only some moved,
+// came or went, as between the triangulations of polishing and topology control: a seed that did
+// not change keeps its list without the seeds that did, its complete radius bounded by the
+// nearest of those as they are now; the others get k nearest seeds from `tree`, which holds
+// `seeds`.
+SeedNeighbors carried_over(const SeedNeighbors& previous, const std::vector<Vec3>& was,
+                           const std::vector<Vec3>& seeds, const PointTree& tree, std::size_t k);
+
 // The lists of `previous`, made for the seeds at `was`, for the same seeds now at `seeds` (issue
 // 19: seeds that moved little since keep their candidates, and no kNN search is needed): each
 // re-sorted by distance, its complete radius shrunk by its seed's move plus the largest move
