@@ -128,20 +128,31 @@ class CellCorners : public PolygonSink {
 
 // The seeds not in `local` (sorted) that are nearer to a corner of a local cell than that cell's
 // seed (at `positions`): the local RVD gave the cell a part that is theirs. `tree` holds all the
-// seeds at `fixed`, their positions before this round's steps (only local seeds move).
+// seeds at `fixed`, their positions before this round's steps (only local seeds move). Such a
+// seed is within twice the cell's reach of its seed: one search per cell, not per corner
+// (femur.off at 5k, whose topology control polishes around hundreds of new seeds: 8.8 → 8.4 s).
 std::vector<Index> intruders(const CellCorners& corners, const std::vector<Index>& local,
                              const std::vector<Vec3>& positions, const PointTree& tree,
                              const std::vector<Vec3>& fixed) {
-  std::vector<Index> out, near;
+  std::vector<std::vector<Vec3>> of_cell(local.size());
   for (const auto& chunk : corners.chunks())
-    for (const auto& [k, corner] : chunk) {
-      const double r2 = dot(corner - positions[k], corner - positions[k]);
-      tree.within(corner, r2, near);
-      for (Index s : near)
-        if (dot(fixed[s] - corner, fixed[s] - corner) < r2 &&
-            !std::binary_search(local.begin(), local.end(), s))
-          out.push_back(s);
+    for (const auto& [k, corner] : chunk) of_cell[k].push_back(corner);
+  std::vector<Index> out, near;
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    if (of_cell[k].empty()) continue;
+    double reach2 = 0;
+    for (const Vec3& corner : of_cell[k])
+      reach2 = std::max(reach2, dot(corner - positions[k], corner - positions[k]));
+    tree.within(positions[k], 4 * reach2 * (1 + 1e-6), near);
+    for (const Index s : near) {
+      if (std::binary_search(local.begin(), local.end(), s)) continue;
+      if (std::any_of(of_cell[k].begin(), of_cell[k].end(), [&](const Vec3& corner) {
+            return dot(fixed[s] - corner, fixed[s] - corner) <
+                   dot(corner - positions[k], corner - positions[k]);
+          }))
+        out.push_back(s);
     }
+  }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
