@@ -80,7 +80,8 @@ struct Scratch {
 struct RestrictedVoronoiDiagram::Impl {
   const TriangleMesh* surface;
   std::vector<Vec3> seeds;
-  SeedNeighbors neighbors;
+  // Shared with a TraversalMemory, if one was given, which keeps them for the next diagram.
+  std::shared_ptr<const SeedNeighbors> neighbors;
   std::unique_ptr<PointTree> nearest;
 
   // Takes the seeds, builds the kd-tree and the lists (from `cache` if it has them for seeds
@@ -133,7 +134,7 @@ struct RestrictedVoronoiDiagram::Impl {
     const auto d2 = [&](Index s) { return dot(seeds[s] - q, seeds[s] - q); };
     for (double best = d2(from);;) {
       const Index at = from;
-      for (Index j : neighbors.of(at)) {
+      for (Index j : neighbors->of(at)) {
         const double d = d2(j);
         if (d < best) best = d, from = j;
       }
@@ -153,13 +154,13 @@ struct RestrictedVoronoiDiagram::Impl {
       const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
       return d2 * (1 - 1e-10) <= 4 * reach2();
     };
-    const std::span<const Index> stored = neighbors.of(i);
+    const std::span<const Index> stored = neighbors->of(i);
     for (Index j : stored) {
       if (!within(j)) break;
       if (!visit(j)) return;
     }
     // Done if the list holds every seed within reach, else a radius search finds the rest.
-    if (4 * reach2() * (1 + 1e-6) < neighbors.complete2[i]) return;
+    if (4 * reach2() * (1 + 1e-6) < neighbors->complete2[i]) return;
     ++s.radius_searches;
     nearest->within(seeds[i], 4 * reach2() * (1 + 1e-6), s.spare);
     // In the search's own order (deterministic; clipping's result does not depend on it),
@@ -346,26 +347,29 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
   if (shrunk && reaching(shrunk->lists)) {
     SeedNeighbors moved = bound_by_movers(std::move(*shrunk), seeds, *nearest);
     if (reaching(moved)) {
-      neighbors = std::move(moved);
+      neighbors = std::make_shared<const SeedNeighbors>(std::move(moved));
       times.neighbors_reused = true;
     }
   }
   if (memory) {
     if (!*memory) *memory = std::make_unique<TraversalMemory::State>();
     TraversalMemory::State& m = **memory;
-    neighbors = carried_over(m.lists, m.lists_at, seeds, *nearest, kStoredNeighbors);
-    times.neighbors_reused = !m.lists_at.empty();
+    neighbors = std::make_shared<const SeedNeighbors>(
+        m.lists ? carried_over(*m.lists, m.lists_at, seeds, *nearest, kStoredNeighbors)
+                : nearest_neighbors(seeds, *nearest, kStoredNeighbors));
+    times.neighbors_reused = m.lists != nullptr;
     m.lists = neighbors;
     m.lists_at = seeds;
   } else if (!times.neighbors_reused) {
-    neighbors = nearest_neighbors(seeds, *nearest, kStoredNeighbors);
+    neighbors =
+        std::make_shared<const SeedNeighbors>(nearest_neighbors(seeds, *nearest, kStoredNeighbors));
     if (cache) {
       if (!state) state = (*cache = std::make_unique<NeighborCache::State>()).get();
-      state->fresh_median = median_of(neighbors.complete2);
+      state->fresh_median = median_of(neighbors->complete2);
     }
   }
   if (state) {
-    state->lists = neighbors;
+    state->lists = *neighbors;
     state->at = seeds;
   }
   times.neighbors_seconds = seconds_since(start);
@@ -468,8 +472,9 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
     }
     if (kept)
       recorder->adopt(chunk, *old);
-    else if (adoptable)
-      old->release(chunk);
+    else if (recorder)
+      recorder->finish(chunk);
+    if (adoptable && !kept) old->release(chunk);
   });
   for (PolygonSink* sink : recorded) sink->end();
   TraversalStats stats;

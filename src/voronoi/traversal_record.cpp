@@ -166,6 +166,14 @@ void PolygonRecorder::adopt(std::size_t chunk, TraversalRecord& old) {
   next_[chunk] = std::min(record_.triangle_count_, (chunk + 1) * record_.chunk_size_);
 }
 
+void PolygonRecorder::finish(std::size_t chunk) {
+  TraversalRecord::Chunk& c = record_.chunks_[chunk];
+  c.seed.shrink_to_fit();
+  c.end.shrink_to_fit();
+  c.planes.shrink_to_fit();
+  c.placed.shrink_to_fit();
+}
+
 void PolygonRecorder::end() {
   for (std::size_t chunk = 0; chunk < record_.chunks_.size(); ++chunk) {
     TraversalRecord::Chunk& c = record_.chunks_[chunk];

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -72,6 +73,9 @@ class PolygonRecorder : public PolygonSink {
   // Takes chunk `chunk` of `old`, made with the same chunk size, as this traversal's: its
   // polygons are the same (they went to the other sinks only).
   void adopt(std::size_t chunk, TraversalRecord& old);
+  // After the last polygon of chunk `chunk`: its arrays shrink to what they hold (grown by
+  // doubling, they may hold twice that, and the record is kept from one extraction to the next).
+  void finish(std::size_t chunk);
   TraversalRecord take() && { return std::move(record_); }
 
  private:
@@ -81,7 +85,8 @@ class PolygonRecorder : public PolygonSink {
 
 struct TraversalMemory::State {
   TraversalRecord record;
-  SeedNeighbors lists;  // of the last diagram made with the memory
+  // The lists of the last diagram made with the memory (shared with it), and its seeds.
+  std::shared_ptr<const SeedNeighbors> lists;
   std::vector<Vec3> lists_at;
 };
 
