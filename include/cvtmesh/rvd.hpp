@@ -82,10 +82,11 @@ class NeighborCache {
 };
 
 // What one traversal leaves for the next over the same surface (issue 18, issue 19 item 4:
-// topology control and polishing work locally): every triangle's polygons, and the seeds they
-// were cut for. A traversal given it clips again only the triangles that a seed which moved, came
-// or went may reach, and hands on the others' polygons as they were: the sinks get the same
-// polygons, in the same order, as without it. Empty until a traversal fills it; one per surface.
+// topology control and polishing work locally): every triangle's polygons, the seeds they were
+// cut for, and the seeds' neighbour lists. A traversal given it clips again only the triangles
+// that a seed which moved, came or went may reach, and hands on the others' polygons as they
+// were: the sinks get the same polygons, in the same order, as without it. Empty until a
+// traversal fills it; one per surface.
 class TraversalMemory {
  public:
   TraversalMemory();
