@@ -99,6 +99,7 @@ TEST(DefectSeeds, SplitCellsGetSeedsNearTheDefectsAtTheirFarthestVertices) {
     seeds.push_back({0.9 * std::cos(k * M_PI / 4), 0.9 * std::sin(k * M_PI / 4), -0.01});
   seeds.insert(seeds.end(), {{1, -0.95, 0}, {1, -0.93, 0}, {1, -0.94, 0.005}});
   const TriangleMesh plate = thin_plate();
+  TraversalMemory memory;
   const std::vector<CellIsland> islands = cell_islands(plate, seeds);
   ASSERT_EQ(islands.size(), 1u);
   ASSERT_EQ(islands[0].seed, 0u);
@@ -106,30 +107,30 @@ TEST(DefectSeeds, SplitCellsGetSeedsNearTheDefectsAtTheirFarthestVertices) {
   // Refinement near the defects: the far piece's vertex farthest from its seed, which is in the
   // seed's cell (no seed nearer) and farther from it than the piece's centroid.
   const DefectSeeds near =
-      defect_seeds(plate, seeds, {{0, 1, 2}}, false, SplitCells::near_triangles, nullptr, nullptr);
+      defect_seeds(plate, seeds, {{0, 1, 2}}, false, SplitCells::near_triangles, nullptr, memory);
   ASSERT_EQ(near.islands.size(), 1u);
   const Vec3 p = near.islands[0];
   EXPECT_NEAR(p.z, -0.01, 1e-12);
   for (const Vec3& s : seeds) EXPECT_LE(distance(p, seeds[0]), distance(p, s) + 1e-12);
   EXPECT_GT(distance(p, seeds[0]), distance(islands[0].centroid, seeds[0]) + 0.1);
   // Everywhere, as where no defect shows where.
-  EXPECT_EQ(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, nullptr, nullptr)
+  EXPECT_EQ(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, nullptr, memory)
                 .islands.size(),
             1u);
   // A split cell far from the only defect is left alone.
   EXPECT_TRUE(
-      defect_seeds(plate, seeds, {{9, 10, 11}}, false, SplitCells::near_triangles, nullptr, nullptr)
+      defect_seeds(plate, seeds, {{9, 10, 11}}, false, SplitCells::near_triangles, nullptr, memory)
           .islands.empty());
   // None where the piece reaches a crossing of the input's sheets (here a triangle standing for
   // one, over the far piece).
   const TriangleMesh crossing{{{-0.1, -0.1, -0.01}, {0.1, -0.1, -0.01}, {0, 0.1, -0.01}},
                               {{0, 1, 2}}};
   const SurfaceProjector at(crossing);
-  EXPECT_TRUE(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, &at, nullptr)
+  EXPECT_TRUE(defect_seeds(plate, seeds, {}, false, SplitCells::farthest_everywhere, &at, memory)
                   .islands.empty());
   // The paper's rule, exhaustive: every split cell, at its extra piece's centroid.
   const DefectSeeds all = defect_seeds(plate, seeds, {{9, 10, 11}}, false,
-                                       SplitCells::at_centroids_everywhere, nullptr, nullptr);
+                                       SplitCells::at_centroids_everywhere, nullptr, memory);
   ASSERT_EQ(all.islands.size(), 1u);
   EXPECT_EQ(all.islands[0], islands[0].centroid);
 }

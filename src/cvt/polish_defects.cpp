@@ -134,21 +134,22 @@ class CellCorners : public PolygonSink {
 std::vector<Index> intruders(const CellCorners& corners, const std::vector<Index>& local,
                              const std::vector<Vec3>& positions, const PointTree& tree,
                              const std::vector<Vec3>& fixed) {
-  std::vector<std::vector<Vec3>> of_cell(local.size());
+  // Per local cell, its corners and their squared distances to its seed.
+  std::vector<std::vector<std::pair<Vec3, double>>> of_cell(local.size());
   for (const auto& chunk : corners.chunks())
-    for (const auto& [k, corner] : chunk) of_cell[k].push_back(corner);
+    for (const auto& [k, corner] : chunk)
+      of_cell[k].emplace_back(corner, dot(corner - positions[k], corner - positions[k]));
   std::vector<Index> out, near;
   for (std::size_t k = 0; k < local.size(); ++k) {
     if (of_cell[k].empty()) continue;
     double reach2 = 0;
-    for (const Vec3& corner : of_cell[k])
-      reach2 = std::max(reach2, dot(corner - positions[k], corner - positions[k]));
+    for (const auto& [corner, r2] : of_cell[k]) reach2 = std::max(reach2, r2);
     tree.within(positions[k], 4 * reach2 * (1 + 1e-6), near);
     for (const Index s : near) {
       if (std::binary_search(local.begin(), local.end(), s)) continue;
-      if (std::any_of(of_cell[k].begin(), of_cell[k].end(), [&](const Vec3& corner) {
-            return dot(fixed[s] - corner, fixed[s] - corner) <
-                   dot(corner - positions[k], corner - positions[k]);
+      if (std::any_of(of_cell[k].begin(), of_cell[k].end(), [&](const auto& corner_r2) {
+            const Vec3 to = fixed[s] - corner_r2.first;
+            return dot(to, to) < corner_r2.second;
           }))
         out.push_back(s);
     }

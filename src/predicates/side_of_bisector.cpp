@@ -203,13 +203,6 @@ bool closer_to_cell(const ClipFrame& f, const RvdVertex& v, Index j, PredicateCo
 
 namespace {
 
-std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b) {
-  for (std::int32_t s : a.symbols)
-    if (s == b.symbols[0] || s == b.symbols[1]) return s;
-  assert(false && "consecutive polygon vertices share no plane");
-  return a.symbols[0];
-}
-
 // The error bound of q, the rounded N / D, from the bounds of N and D plus q's own rounding;
 // infinite when D's bound reaches 0 (nearly parallel planes, see bisector_crossing).
 double quotient_error(double q, double N, double error_N, double D, double error_D) {
@@ -286,6 +279,13 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
 }
 
 }  // namespace
+
+std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b) {
+  for (std::int32_t s : a.symbols)
+    if (s == b.symbols[0] || s == b.symbols[1]) return s;
+  assert(false && "consecutive polygon vertices share no plane");
+  return a.symbols[0];
+}
 
 RvdVertex vertex_with_symbols(const ClipFrame& f, std::array<std::int32_t, 2> symbols) {
   RvdVertex v;

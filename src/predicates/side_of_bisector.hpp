@@ -33,6 +33,9 @@ bool closer_to_cell(const ClipFrame& frame, const RvdVertex& v, Index j,
 RvdVertex bisector_crossing(const ClipFrame& frame, const RvdVertex& a, const RvdVertex& b,
                             Index j);
 
+// The symbol that consecutive polygon vertices a and b share: the plane of the side between them.
+std::int32_t common_symbol(const RvdVertex& a, const RvdVertex& b);
+
 // The RVD vertex at input corner k of the frame's triangle.
 RvdVertex corner_vertex(const ClipFrame& frame, int k);
 

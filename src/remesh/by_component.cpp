@@ -178,9 +178,9 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
     const Index a = local_in(home, e[0]), b = local_in(home, e[1]);
     all[home].features.user_edges.push_back({std::min(a, b), std::max(a, b)});
   }
+  // A vertex where components touch is a corner anyway.
   for (const Index v : settings.features.user_corners)
-    if (component[v] != kNoIndex &&
-        !pinch[v])  // a vertex where components touch is a corner anyway
+    if (component[v] != kNoIndex && !pinch[v])
       all[component[v]].features.user_corners.push_back(local[v]);
   if (!settings.sizing.edge_lengths.empty())
     for (Index c = 0; c < parts.size(); ++c)

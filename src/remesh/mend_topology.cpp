@@ -238,7 +238,7 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
                                          : SplitCells::near_triangles;
     found = defect_seeds(m.surface, seeds, dual,
                          m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing,
-                         &m.traversals);
+                         m.traversals);
   }
   if (!a.missing.empty() && !out_of_time) {
     const std::size_t mended =

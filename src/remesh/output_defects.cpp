@@ -98,20 +98,16 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
                          SplitCells split_cells, const SurfaceProjector* crossings,
-                         TraversalMemory* memory) {
+                         TraversalMemory& memory) {
   const bool exhaustive = split_cells == SplitCells::at_centroids_everywhere;
   const bool everywhere = split_cells != SplitCells::near_triangles;
-  const RestrictedVoronoiDiagram rvd = memory ? RestrictedVoronoiDiagram(surface, seeds, *memory)
-                                              : RestrictedVoronoiDiagram(surface, seeds);
+  const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
   CellPieceCollector pieces(surface);
   CrossingCollector collector(seeds, triangles);
   PieceEulerCollector euler(surface, seeds);
   std::vector<PolygonSink*> sinks{&pieces, &collector};
   if (check_discs || !exhaustive) sinks.push_back(&euler);  // the pieces' farthest vertices
-  if (memory)
-    rvd.traverse(sinks, *memory);
-  else
-    rvd.traverse(sinks);
+  rvd.traverse(sinks, memory);
   DefectSeeds out;
   const DefectBalls at_defects(seeds, triangles);
   const std::vector<PieceShape> shapes =

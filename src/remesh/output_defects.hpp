@@ -66,11 +66,11 @@ struct DefectSeeds {
 //   handles far finer than the spacing (femur.off at 1k) that the farthest vertices leave.
 // No piece gets a seed where it reaches `crossings` (the input's triangles that cross another;
 // null: none) within its reach from its seed.
-// `memory`, if given, holds the last traversal of `surface` (see TraversalMemory).
+// `memory` holds the last traversal of `surface` (see TraversalMemory), and gets this one.
 enum class SplitCells { near_triangles, farthest_everywhere, at_centroids_everywhere };
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
                          SplitCells split_cells, const SurfaceProjector* crossings,
-                         TraversalMemory* memory);
+                         TraversalMemory& memory);
 
 }  // namespace cvtmesh

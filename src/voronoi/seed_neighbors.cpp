@@ -8,7 +8,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <optional>
 #include <string>
 
 #include "cvtmesh/errors.hpp"
@@ -87,26 +86,29 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
   return n;
 }
 
+SeedChanges::SeedChanges(const std::vector<Vec3>& was, const std::vector<Vec3>& seeds)
+    : changed_(std::max(was.size(), seeds.size()), 1) {
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    if (s < was.size() && seeds[s] == was[s])
+      changed_[s] = 0;
+    else
+      arrived_.push_back(seeds[s]);
+  }
+  if (!arrived_.empty()) near_.emplace(arrived_);
+}
+
 SeedNeighbors carried_over(const SeedNeighbors& previous, const std::vector<Vec3>& was,
                            const std::vector<Vec3>& seeds, const PointTree& tree, std::size_t k) {
   k = std::min(k, seeds.size() - 1);
-  std::vector<char> changed(std::max(was.size(), seeds.size()), 1);
-  std::vector<Vec3> arrived;  // where the changed seeds are now
-  for (std::size_t s = 0; s < seeds.size(); ++s) {
-    if (s < was.size() && seeds[s] == was[s])
-      changed[s] = 0;
-    else
-      arrived.push_back(seeds[s]);
-  }
-  std::optional<PointTree> near_arrived;
-  if (!arrived.empty()) near_arrived.emplace(arrived);
-  const auto kept = [&](Index j) { return !changed[j]; };
+  const SeedChanges changes(was, seeds);
+  const auto kept = [&](Index j) { return !changes.changed(j); };
   SeedNeighbors n;
   n.offsets.assign(seeds.size() + 1, 0);
   for (Index s = 0; s < seeds.size(); ++s) {
-    const std::span<const Index> list = changed[s] ? std::span<const Index>{} : previous.of(s);
+    const std::span<const Index> old =
+        changes.changed(s) ? std::span<const Index>{} : previous.of(s);
     n.offsets[s + 1] =
-        n.offsets[s] + (changed[s] ? k : std::count_if(list.begin(), list.end(), kept));
+        n.offsets[s] + (changes.changed(s) ? k : std::count_if(old.begin(), old.end(), kept));
   }
   n.ids.resize(n.offsets.back());
   n.complete2.resize(seeds.size());
@@ -115,7 +117,7 @@ SeedNeighbors carried_over(const SeedNeighbors& previous, const std::vector<Vec3
       tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
         for (Index s = r.begin(); s < r.end(); ++s) {
           const std::span<Index> list(n.ids.data() + n.offsets[s], n.ids.data() + n.offsets[s + 1]);
-          if (changed[s]) {
+          if (changes.changed(s)) {
             n.complete2[s] = search_list(seeds, tree, s, k, found.local(), list);
             continue;
           }
@@ -124,10 +126,8 @@ SeedNeighbors carried_over(const SeedNeighbors& previous, const std::vector<Vec3
           const std::span<const Index> old = previous.of(s);
           std::copy_if(old.begin(), old.end(), list.begin(), kept);
           double c = previous.complete2[s];
-          if (near_arrived) {
-            const Vec3& a = arrived[(*near_arrived)(seeds[s])];
-            c = std::min(c, kRoundedDown * dot(a - seeds[s], a - seeds[s]));
-          }
+          if (const Vec3* a = changes.nearest_arrived(seeds[s]))
+            c = std::min(c, kRoundedDown * dot(*a - seeds[s], *a - seeds[s]));
           n.complete2[s] = c;
         }
       });

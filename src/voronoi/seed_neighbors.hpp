@@ -5,6 +5,7 @@
 // not. No Delaunay triangulation is needed, and none of its degenerate cases arise.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,25 @@ void reject_identical_seeds(const std::vector<Vec3>& seeds);
 // Each seed's k nearest other seeds (fewer when there are fewer seeds).
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
                                 std::size_t k);
+
+// Which of `seeds` differ from the seeds at `was` (moved, or came: an id past `was`; ids past
+// `seeds` went), and the nearest of those that moved or came to a point.
+class SeedChanges {
+ public:
+  SeedChanges(const std::vector<Vec3>& was, const std::vector<Vec3>& seeds);
+  SeedChanges(const SeedChanges&) = delete;  // the tree refers to `arrived_`
+  SeedChanges& operator=(const SeedChanges&) = delete;
+  bool changed(Index s) const { return changed_[s] != 0; }
+  // Where the seed that moved or came nearest to p now is; null if none did.
+  const Vec3* nearest_arrived(const Vec3& p) const {
+    return near_ ? &arrived_[(*near_)(p)] : nullptr;
+  }
+
+ private:
+  std::vector<char> changed_;  // per id of either
+  std::vector<Vec3> arrived_;
+  std::optional<PointTree> near_;
+};
 
 // The lists of `previous`, made for the seeds at `was`, for `seeds` of which only some moved,
 // came or went, as between the triangulations of polishing and topology control: a seed that did

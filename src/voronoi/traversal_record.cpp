@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 
-#include "geometry/point_tree.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "voronoi/polygon_reach.hpp"
 
@@ -17,11 +15,6 @@ namespace {
 
 bool same(const RvdVertex& a, const RvdVertex& b) {
   return a.point == b.point && a.error == b.error && a.symbols == b.symbols;
-}
-
-// The plane of the side from a to b: the symbol they share.
-std::int32_t shared_plane(const RvdVertex& a, const RvdVertex& b) {
-  return a.symbols[0] == b.symbols[0] || a.symbols[0] == b.symbols[1] ? a.symbols[0] : a.symbols[1];
 }
 
 // The vertex between sides on planes `before` and `after`, as the traversal makes it: its symbols
@@ -42,19 +35,9 @@ bool TraversalRecord::covers(const TriangleMesh& surface) const {
 }
 
 std::vector<char> TraversalRecord::stale_triangles(const std::vector<Vec3>& seeds) const {
-  const std::size_t kept = std::min(seeds.size(), seeds_.size());
-  std::vector<char> changed(std::max(seeds.size(), seeds_.size()), 1);
-  std::vector<Vec3> arrived;  // the changed seeds' new positions
-  for (std::size_t i = 0; i < seeds.size(); ++i) {
-    if (i < kept && seeds[i] == seeds_[i])
-      changed[i] = 0;
-    else
-      arrived.push_back(seeds[i]);
-  }
-  std::optional<PointTree> near;
-  if (!arrived.empty()) near.emplace(arrived);
+  const SeedChanges changes(seeds_, seeds);
   const auto changed_plane = [&](std::int32_t s) {
-    return s >= 0 && changed[static_cast<Index>(s)];
+    return s >= 0 && changes.changed(static_cast<Index>(s));
   };
   std::vector<char> stale(triangle_count_, 0);
   tbb::parallel_for(std::size_t{0}, triangle_count_, [&](std::size_t t) {
@@ -62,22 +45,22 @@ std::vector<char> TraversalRecord::stale_triangles(const std::vector<Vec3>& seed
     const std::size_t local = t % chunk_size_;
     for (std::uint32_t p = c.first[local]; p < c.first[local + 1]; ++p) {
       const std::uint32_t begin = p == 0 ? 0 : c.end[p - 1];
-      if (changed[c.seed[p]] ||
+      if (changes.changed(c.seed[p]) ||
           std::any_of(c.planes.begin() + begin, c.planes.begin() + c.end[p], changed_plane)) {
         stale[t] = 1;
         return;
       }
     }
-    if (!near) return;
     // A point of the triangle nearer to an arrived seed than to its own is within the reach of
     // the triangle's polygons from that seed: the arrived seed is within the triangle's bounding
     // ball grown by that reach (margins far beyond rounding).
     const auto [a, b, q] = surface_->corners(t);
     const Vec3 centre = (1.0 / 3) * (a + b + q);
+    const Vec3* nearest = changes.nearest_arrived(centre);
+    if (!nearest) return;
     const double radius = std::max({distance(a, centre), distance(b, centre), distance(q, centre)});
-    const Vec3& nearest = arrived[(*near)(centre)];
     const double reach = std::sqrt(c.reach2[local]);
-    stale[t] = distance(nearest, centre) <= (radius + reach) * (1 + 1e-9) + 1e-300;
+    stale[t] = distance(*nearest, centre) <= (radius + reach) * (1 + 1e-9) + 1e-300;
   });
   return stale;
 }
@@ -123,17 +106,22 @@ PolygonRecorder::PolygonRecorder(const TriangleMesh& surface, const std::vector<
 void PolygonRecorder::begin(std::size_t chunks) {
   record_.chunks_.assign(chunks, {});
   next_.resize(chunks);
-  for (std::size_t c = 0; c < chunks; ++c) {
-    const std::size_t begin = c * record_.chunk_size_;
+  for (std::size_t c = 0; c < chunks; ++c) next_[c] = c * record_.chunk_size_;
+}
+
+TraversalRecord::Chunk& PolygonRecorder::started(std::size_t chunk) {
+  TraversalRecord::Chunk& c = record_.chunks_[chunk];
+  if (c.first.empty()) {  // not yet written, nor taken over from the last record
+    const std::size_t begin = chunk * record_.chunk_size_;
     const std::size_t end = std::min(record_.triangle_count_, begin + record_.chunk_size_);
-    record_.chunks_[c].first.assign(end - begin + 1, 0);
-    record_.chunks_[c].reach2.assign(end - begin, 0);
-    next_[c] = begin;
+    c.first.assign(end - begin + 1, 0);
+    c.reach2.assign(end - begin, 0);
   }
+  return c;
 }
 
 void PolygonRecorder::polygon(std::size_t chunk, const RvdPolygon& polygon) {
-  TraversalRecord::Chunk& c = record_.chunks_[chunk];
+  TraversalRecord::Chunk& c = started(chunk);
   const std::size_t begin = chunk * record_.chunk_size_;
   const auto count = static_cast<std::uint32_t>(c.seed.size());
   for (; next_[chunk] <= polygon.triangle; ++next_[chunk]) c.first[next_[chunk] - begin] = count;
@@ -147,7 +135,7 @@ void PolygonRecorder::polygon(std::size_t chunk, const RvdPolygon& polygon) {
     const std::span<const RvdVertex> v = polygon.vertices;
     const auto first = static_cast<std::uint32_t>(c.planes.size());
     for (std::size_t k = 0; k < v.size(); ++k)
-      c.planes.push_back(shared_plane(v[k], v[(k + 1) % v.size()]));
+      c.planes.push_back(predicates::common_symbol(v[k], v[(k + 1) % v.size()]));
     // A vertex that its planes would not give bit for bit is kept whole (see Chunk).
     for (std::size_t k = 0; k < v.size(); ++k) {
       const std::int32_t before = c.planes[first + (k == 0 ? v.size() - 1 : k - 1)];
@@ -176,7 +164,7 @@ void PolygonRecorder::finish(std::size_t chunk) {
 
 void PolygonRecorder::end() {
   for (std::size_t chunk = 0; chunk < record_.chunks_.size(); ++chunk) {
-    TraversalRecord::Chunk& c = record_.chunks_[chunk];
+    TraversalRecord::Chunk& c = started(chunk);
     const std::size_t begin = chunk * record_.chunk_size_;
     const auto count = static_cast<std::uint32_t>(c.seed.size());
     for (std::size_t t = next_[chunk] - begin; t < c.first.size(); ++t) c.first[t] = count;

@@ -79,6 +79,9 @@ class PolygonRecorder : public PolygonSink {
   TraversalRecord take() && { return std::move(record_); }
 
  private:
+  // Chunk `chunk`, its per-triangle arrays made on first use (those taken over have theirs).
+  TraversalRecord::Chunk& started(std::size_t chunk);
+
   TraversalRecord record_;
   std::vector<std::size_t> next_;  // per chunk, the first triangle whose `first` is not set yet
 };
