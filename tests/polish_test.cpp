@@ -4,8 +4,11 @@
 
 #include <algorithm>
 
+#include "cvt/polish_defects.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
+#include "cvtmesh/sampling.hpp"
+#include "geometry/surface_projector.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
@@ -107,6 +110,53 @@ TEST(Polish, OnFacetsLargerThanTheCellsRemovesTheDefect) {
     EXPECT_GE(q.angle_min_deg, 30.0) << "defect at triangle " << k;
     EXPECT_GE(q.q_min, 0.6) << "defect at triangle " << k;
   }
+}
+
+// Topology control polishes after each of its rounds, which change a few seeds: a defect that the
+// polishing before left as it was, its seeds where they were, is not polished again; one whose
+// seed moved since is, and only the seeds around it move.
+TEST(Polish, PolishesAgainOnlyTheDefectsWhoseSeedsChanged) {
+  const TriangleMesh sphere = icosphere(4);
+  const SurfaceProjector projector(sphere);
+  const CvtObjective placement(sphere, &projector);
+  // Random seeds, one round of one step: most defects stay.
+  std::vector<Vec3> seeds = sample_surface(sphere, 800, 1);
+  const PolishSettings one_step{1, 1};
+  TraversalMemory memory;
+  ASSERT_EQ(extract_polished(sphere, seeds, placement, one_step, memory).rounds, 1);
+  const std::vector<Vec3> polished = seeds;
+
+  const PolishedOutput again =
+      extract_polished(sphere, seeds, placement, one_step, memory, &polished);
+  ASSERT_GT(again.defects, 0u);
+  EXPECT_EQ(again.rounds, 0);
+  EXPECT_TRUE(seeds == polished) << "a seed moved";
+  // Not told what was polished, it polishes them all again, far and wide.
+  std::vector<Vec3> unrecorded = polished;
+  EXPECT_EQ(extract_polished(sphere, unrecorded, placement, one_step, memory).rounds, 1);
+  std::size_t moved_unrecorded = 0;
+  for (std::size_t s = 0; s < seeds.size(); ++s) moved_unrecorded += unrecorded[s] != polished[s];
+
+  // A seed of a defect moves a little: that defect is polished, near it only. 800 seeds on the
+  // unit sphere are about 0.13 apart.
+  const Triangle defect = *std::find_if(
+      again.mesh.triangles.begin(), again.mesh.triangles.end(), [&](const Triangle& t) {
+        const TriangleShape shape = triangle_shape(
+            again.mesh.vertices[t[0]], again.mesh.vertices[t[1]], again.mesh.vertices[t[2]]);
+        return shape.min_angle < 35 || shape.quality < 0.65;
+      });
+  const Index k = defect[0];
+  seeds[k] = placement.constrained(k, seeds[k] + 0.1 * (seeds[defect[1]] - seeds[k]));
+  const std::vector<Vec3> nudged = seeds;
+  EXPECT_EQ(extract_polished(sphere, seeds, placement, one_step, memory, &polished).rounds, 1);
+  std::size_t moved = 0;
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    if (seeds[s] == nudged[s]) continue;
+    ++moved;
+    EXPECT_LT(norm(seeds[s] - nudged[k]), 0.5) << "seed " << s << " far from the nudged one moved";
+  }
+  EXPECT_GT(moved, 0u);
+  EXPECT_LT(4 * moved, moved_unrecorded);
 }
 
 }  // namespace

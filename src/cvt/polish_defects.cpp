@@ -53,14 +53,17 @@ bool defective(const TriangleMesh& mesh, const Triangle& t) {
   return shape.min_angle < kMinAngleDeg || shape.quality < kMinQuality;
 }
 
-// The seeds of the defective triangles, sorted; `count` is set to the number of those triangles.
-std::vector<Index> defective_seeds(const TriangleMesh& rdt, std::size_t& count) {
+// The seeds of the defective triangles that are not `settled`, sorted; `count` is set to the
+// number of all defective triangles.
+template <class Settled>
+std::vector<Index> defective_seeds(const TriangleMesh& rdt, const Settled& settled,
+                                   std::size_t& count) {
   std::vector<Index> seeds;
   count = 0;
   for (const Triangle& t : rdt.triangles) {
     if (!defective(rdt, t)) continue;
     ++count;
-    seeds.insert(seeds.end(), t.begin(), t.end());
+    if (!settled(t)) seeds.insert(seeds.end(), t.begin(), t.end());
   }
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
@@ -220,8 +223,16 @@ void local_lloyd(const TriangleMesh& patch, const std::vector<double>& density,
 
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings,
-                                TraversalMemory& memory) {
+                                TraversalMemory& memory, const std::vector<Vec3>* polished) {
   PolishedOutput out;
+  // Lloyd steps left these defects as they are; more of them move them little. (man.off at 5k:
+  // each of topology control's 5 rounds polished the same 15-20 defects again, 10 steps a round,
+  // a third of the run; 5.9 s → 4.7 s. On the corpus the outputs are as good on average.)
+  const auto settled = [&](const Triangle& t) {
+    return polished && std::all_of(t.begin(), t.end(), [&](Index s) {
+             return s < polished->size() && (*polished)[s] == seeds[s];
+           });
+  };
   std::vector<Index> moving;
   for (int round = 0;; ++round) {
     const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
@@ -236,7 +247,7 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     // cells' far pieces (which topology control sees to).
     const TriangleMesh rdt_of_seeds = among_seeds(out.mesh, seeds.size());
     std::size_t defects = 0;
-    const std::vector<Index> defective = defective_seeds(rdt_of_seeds, defects);
+    const std::vector<Index> defective = defective_seeds(rdt_of_seeds, settled, defects);
     if (round == 0) out.defects = defects;
     // The defects' seeds and their neighbours move, except feature seeds: moving them along
     // their curves would undo the snapping (§4.3) that made the curves' chains of output edges.

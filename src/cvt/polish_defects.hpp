@@ -33,9 +33,12 @@ struct PolishedOutput {
 // seeds around them by local Lloyd steps and triangulates again. Moved seeds stay on the
 // surface (objective.constrained); feature seeds do not move. The result does not depend on
 // the thread count. Each triangulation replays from `memory` what the last traversal of
-// `surface` there left unchanged, and leaves its own for the next.
+// `surface` there left unchanged, and leaves its own for the next. `polished`, if given, holds the
+// seeds of an output polished before: a defect whose three seeds are all there as they were then
+// was polished then, and is not polished again (topology control's rounds change a few seeds).
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings,
-                                TraversalMemory& memory);
+                                TraversalMemory& memory,
+                                const std::vector<Vec3>* polished = nullptr);
 
 }  // namespace cvtmesh

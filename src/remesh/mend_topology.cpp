@@ -135,9 +135,10 @@ class KeptRounds {
  private:
   std::optional<Round> best_;
   // The best of the rounds without the input's topology whose output the last step gives it
-  // back: the rounds' best by defects may not be one (femur.off at 2k: the best round's defects,
-  // removed, cut off a handle; topology lost), and then this one is kept instead (issue 18 item
-  // 1: validity). A round that keeps the topology is the best anyway: none is copied for it.
+  // back: the rounds' best by defects may not be one (femur.off at 1.75k, seed 3: the best
+  // round's defects, removed, cut off a handle; topology lost), and then this one is kept instead
+  // (issue 18 item 1: validity). A round that keeps the topology is the best anyway: none is
+  // copied for it.
   std::optional<Round> best_rescued_;
 };
 
@@ -276,6 +277,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.
     const std::vector<Index> vertex_seed = output.vertex_seed;
+    const std::vector<Vec3> polished = seeds;  // those of `output`, polished
     stops.scored(kept.keep(output, seeds, constraints, a, report));
     std::size_t added = 0;
     if (stops.may_add(round, seeds.size(), kept.best().seeds.size(),
@@ -297,7 +299,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       continue;
     }
     ++report.rounds;
-    output = extract_polished(m.surface, seeds, m.placement, polish, m.traversals);
+    output = extract_polished(m.surface, seeds, m.placement, polish, m.traversals, &polished);
     report.polish_rounds += output.rounds;
   }
   Round best = std::move(kept).take();
