@@ -23,6 +23,11 @@
 //     the cells' pieces, paper §4.4: what every polishing and topology round runs) on icosphere
 //     level 5 (20,480 faces) with N random seeds, against an RVD pass with integrals on the same
 //     seeds (extraction_over_pass).
+//   BM_SpreadSamples/N: the initial seeds of a uniform remesh, N points spread by sample
+//     elimination (spread_s) on icosphere level 5, against random ones (random_s) and one RVD
+//     pass with integrals on them (pass_s); spread_over_pass is the cost in passes (the spread
+//     seeds spare the optimization about 5 of its first iterations, paper §4.1's initial
+//     sampling), and energy_ratio the spread seeds' CVT energy over the random ones'.
 //   BM_ExtractionAfterSeedsAdded/N: that extraction again after 1% more seeds came in, as a round
 //     of topology control adds them: with the TraversalMemory of the extraction before
 //     (remembered_s: lists carried over, the triangles no new seed reaches replayed) against one
@@ -42,6 +47,7 @@
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "geometry/spread_samples.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
 #include "voronoi/multi_nerve.hpp"
@@ -177,6 +183,40 @@ BENCHMARK(BM_RvdDegenerate)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+void BM_SpreadSamples(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const auto energy = [&](const std::vector<Vec3>& seeds) {
+    const RestrictedVoronoiDiagram rvd(mesh, seeds);
+    CellIntegrator integrator(rvd);
+    rvd.traverse(integrator);
+    return integrator.result().total_energy;
+  };
+  for (auto _ : state) {
+    auto start = Clock::now();
+    const std::vector<Vec3> random = sample_surface(mesh, n, 1);
+    const double random_s = seconds(start);
+    start = Clock::now();
+    const std::vector<Vec3> spread = spread_samples(mesh, n, 1);
+    const double spread_s = seconds(start);
+    start = Clock::now();
+    const double random_energy = energy(random);
+    const double pass_s = seconds(start);
+    state.SetIterationTime(spread_s);
+    state.counters["random_s"] = random_s;
+    state.counters["spread_s"] = spread_s;
+    state.counters["pass_s"] = pass_s;
+    state.counters["spread_over_pass"] = spread_s / pass_s;
+    state.counters["energy_ratio"] = energy(spread) / random_energy;
+  }
+}
+BENCHMARK(BM_SpreadSamples)
+    ->Arg(5'000)
+    ->Arg(50'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 void BM_RvdNeighborCache(benchmark::State& state) {
   const TriangleMesh mesh = testing::icosphere(5);

@@ -11,6 +11,7 @@
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/repair.hpp"
+#include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
@@ -108,6 +109,7 @@ TEST(Remesh, EnergyDecreasesAlongAcceptedLbfgsSteps) {
   RemeshSettings s;
   s.vertices = 800;
   s.mode = CvtMode::rcvt;
+  s.iterations = 20;
   const RemeshResult r = remesh(icosphere(4), s);
   ASSERT_GT(r.energies.size(), 5u);
   for (std::size_t k = 1; k < r.energies.size(); ++k) EXPECT_LE(r.energies[k], r.energies[k - 1]);
@@ -126,6 +128,26 @@ TEST(Remesh, LbfgsReachesAToleranceInFewerEvaluationsThanLloyd) {
   EXPECT_LE(lbfgs.gradient_norm_final, 0.05 * lbfgs.gradient_norm_initial);
   EXPECT_LE(lloyd.gradient_norm_final, 0.05 * lloyd.gradient_norm_initial);
   EXPECT_LT(lbfgs.rvd_evaluations, lloyd.rvd_evaluations);
+}
+
+// Spread initial seeds start RCVT half way: it gets half the iteration cap; given seeds, random
+// or not, get it all.
+TEST(Remesh, RcvtFromSpreadSeedsTakesHalfTheIterations) {
+  const TriangleMesh m = icosphere(4);
+  RemeshSettings s;
+  s.vertices = 600;
+  s.mode = CvtMode::rcvt;
+  s.gradient_tolerance = 1e-12;  // the cap stops it
+  s.iterations = 10;
+  const RemeshResult spread = remesh(m, s);
+  EXPECT_EQ(spread.iterations, 5);
+  s.vertices = 0;
+  s.initial_seeds = sample_surface(m, 600, 1);
+  const RemeshResult given = remesh(m, s);
+  EXPECT_EQ(given.iterations, 10);
+  // Spread, they start nearer to centroidal than random ones, and end at least as near.
+  EXPECT_LT(spread.energy_initial, 0.75 * given.energy_initial);
+  EXPECT_LT(spread.energy_final, 1.005 * given.energy_final);
 }
 
 TEST(Remesh, SameOutputOnOneAndAllThreads) {

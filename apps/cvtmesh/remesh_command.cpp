@@ -158,7 +158,8 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_option("--max-edge-length", o->settings.sizing.max_edge_length,
                   "Clamp of the target lengths (with --adaptive or --sizing)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--iterations", o->settings.iterations, "Iteration cap per phase")
+  cmd->add_option("--iterations", o->settings.iterations,
+                  "Iteration cap per phase (half for RCVT from the evenly spread initial seeds)")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option(

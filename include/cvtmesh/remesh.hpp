@@ -32,10 +32,10 @@ struct RemeshSettings {
   // the target lengths to give that many vertices, and an edge length is their median over the
   // surface (by area); a sizing by edge_lengths or edge_length_at may also set none of the
   // three, and is then taken as it is.
-  std::size_t vertices = 0;          // number of output vertices
-  double edge_length = 0;            // target edge length, in the mesh's units
-  double edge_length_rel = 0;        // target edge length, as a fraction of the bbox diagonal
-  int iterations = 10;               // cap on the iterations of each phase
+  std::size_t vertices = 0;    // number of output vertices
+  double edge_length = 0;      // target edge length, in the mesh's units
+  double edge_length_rel = 0;  // target edge length, as a fraction of the bbox diagonal
+  int iterations = 10;         // cap on the iterations of each phase (RCVT from spread seeds: half)
   double gradient_tolerance = 1e-3;  // stop a phase when ‖∇F‖ falls below this × its start
   Optimizer optimizer = Optimizer::lbfgs;
   CvtMode mode = CvtMode::both;     // both: RCVT, then CCVT (paper §4.2)

@@ -8,23 +8,19 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
 #include "geometry/area_sampler.hpp"
+#include "geometry/unit_scale.hpp"
 #include "io/input_problem.hpp"
 
 namespace cvtmesh {
 
 std::vector<Vec3> sample_surface(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
-  // Triangle areas at 2^-600 underflow to zero: sampled at about unit size, scaled back.
-  const int exponent = size_exponent(mesh);
-  if (exponent != 0) {
-    std::vector<Vec3> points = sample_surface(scaled_by_power_of_two(mesh, -exponent), count, seed);
-    for (Vec3& p : points) p = scaled_by_power_of_two(p, exponent);
+  return points_at_unit_scale(mesh, [&](const TriangleMesh& unit) {
+    const AreaSampler sampler(unit, seed);
+    if (!sampler.has_area()) throw InvalidArgument("cannot sample a surface of zero area");
+    std::vector<Vec3> points(count);
+    for (std::size_t k = 0; k < count; ++k) points[k] = sampler(k);
     return points;
-  }
-  const AreaSampler sampler(mesh, seed);
-  if (!sampler.has_area()) throw InvalidArgument("cannot sample a surface of zero area");
-  std::vector<Vec3> points(count);
-  for (std::size_t k = 0; k < count; ++k) points[k] = sampler(k);
-  return points;
+  });
 }
 
 std::vector<Vec3> read_points(const std::filesystem::path& path) {

@@ -135,7 +135,7 @@ class KeptRounds {
  private:
   std::optional<Round> best_;
   // The best of the rounds without the input's topology whose output the last step gives it
-  // back: the rounds' best by defects may not be one (femur.off at 1.75k, seed 3: the best
+  // back: the rounds' best by defects may not be one (femur.off at 2.4k, seed 6: the best
   // round's defects, removed, cut off a handle; topology lost), and then this one is kept instead
   // (issue 18 item 1: validity). A round that keeps the topology is the best anyway: none is
   // copied for it.

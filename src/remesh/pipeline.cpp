@@ -12,11 +12,11 @@
 #include "cvt/minimize.hpp"
 #include "cvt/polish_defects.hpp"
 #include "cvtmesh/errors.hpp"
-#include "cvtmesh/sampling.hpp"
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
 #include "geometry/area_sampler.hpp"
+#include "geometry/spread_samples.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
 #include "remesh/finish_output.hpp"
@@ -42,11 +42,11 @@ constexpr int kSnapRounds = 2;
 // differs (fully even spacing lost joint.off and triple_vierbein.obj 5-8° at 2k vertices).
 constexpr int kCurveLloydSteps = 30;
 
-// One output size at most; none only for initial seeds (their count is the size) or target
-// `count` random seeds: area-uniform, or with the density of the target lengths (paper §4.1).
+// `count` random seeds: evenly spread by area, or with the density of the target lengths (paper
+// §4.1).
 std::vector<Vec3> random_seeds(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
                                const SizeField* field) {
-  if (!field) return sample_surface(mesh, count, seed);
+  if (!field) return spread_samples(mesh, count, seed);
   const AreaSampler sampler(mesh, seed, field->seed_weights());
   std::vector<Vec3> points(count);
   for (std::size_t k = 0; k < count; ++k) points[k] = sampler(k);
@@ -77,6 +77,7 @@ double edge_length_for(double area, std::size_t n) {
   return std::sqrt(area / (std::sqrt(3.0) / 2 * static_cast<double>(n)));
 }
 
+// One output size at most; none only for initial seeds (their count is the size) or target
 // lengths given as they are (RemeshSettings).
 void check_output_size(const RemeshSettings& s) {
   const int given = (s.vertices > 0) + (s.edge_length != 0) + (s.edge_length_rel != 0);
@@ -143,6 +144,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                                 ? unit_vertex_count(mesh, settings, field)
                                 : settings.initial_seeds.size();
   check_memory_for(input.triangles.size(), count);
+  const bool spread = settings.initial_seeds.empty() && !field;
   std::vector<Vec3> seeds = settings.initial_seeds.empty()
                                 ? random_seeds(mesh, count, settings.seed, field)
                                 : settings.initial_seeds;
@@ -174,8 +176,11 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     const auto phase_start = Clock::now();
     CvtObjective objective(mesh, bound ? &*projector : nullptr, bound, bound ? &*curves : nullptr,
                            &interrupt, &density);
-    const PhaseOptions options{name, settings.iterations, settings.gradient_tolerance,
-                               &settings.progress, start};
+    // Spread seeds start RCVT about half way: half its iterations take it where random seeds
+    // take the whole cap (on the corpus, 57 meshes × 1k/5k/10k, seeds 1 and 2: θmin and Qmin as
+    // good on average, the median run 8% faster).
+    const int cap = bound || !spread ? settings.iterations : (settings.iterations + 1) / 2;
+    const PhaseOptions options{name, cap, settings.gradient_tolerance, &settings.progress, start};
     const PhaseResult phase = settings.optimizer == Optimizer::lbfgs
                                   ? minimize_lbfgs(objective, seeds, options)
                                   : minimize_lloyd(objective, seeds, options);

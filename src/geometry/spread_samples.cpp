@@ -1,0 +1,142 @@
+#include "geometry/spread_samples.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "cvtmesh/errors.hpp"
+#include "geometry/area_sampler.hpp"
+#include "geometry/point_tree.hpp"
+#include "geometry/unit_scale.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// Candidates per point kept. Yuksel uses 5; on bunny.off at 5k, 3 start the optimization as
+// well (the energy after 5 RCVT iterations within 0.03%), at 60% of the elimination's cost.
+constexpr std::size_t kCandidatesPerPoint = 3;
+
+// Candidates by weight, heaviest on top (ties: the higher index), with a way to lower one's
+// weight: the weights only ever go down as neighbours are eliminated.
+class WeightHeap {
+ public:
+  explicit WeightHeap(std::vector<double> weights)
+      : weight_(std::move(weights)), heap_(weight_.size()), at_(weight_.size()) {
+    for (std::size_t k = 0; k < heap_.size(); ++k) heap_[k] = at_[k] = static_cast<Index>(k);
+    for (std::size_t k = heap_.size() / 2; k-- > 0;) sift_down(k);
+  }
+  std::size_t size() const { return heap_.size(); }
+  // Removes and returns the heaviest.
+  Index pop() {
+    const Index top = heap_.front();
+    place(0, heap_.back());
+    heap_.pop_back();
+    if (!heap_.empty()) sift_down(0);
+    at_[top] = kNoIndex;
+    return top;
+  }
+  bool contains(Index i) const { return at_[i] != kNoIndex; }
+  void lower(Index i, double by) {
+    weight_[i] -= by;
+    sift_down(at_[i]);
+  }
+
+ private:
+  bool heavier(Index a, Index b) const {
+    return weight_[a] > weight_[b] || (weight_[a] == weight_[b] && a > b);
+  }
+  void place(std::size_t k, Index i) {
+    heap_[k] = i;
+    at_[i] = static_cast<Index>(k);
+  }
+  void sift_down(std::size_t k) {
+    const Index moving = heap_[k];
+    for (;;) {
+      std::size_t child = 2 * k + 1;
+      if (child >= heap_.size()) break;
+      if (child + 1 < heap_.size() && heavier(heap_[child + 1], heap_[child])) ++child;
+      if (!heavier(heap_[child], moving)) break;
+      place(k, heap_[child]);
+      k = child;
+    }
+    place(k, moving);
+  }
+
+  std::vector<double> weight_;
+  std::vector<Index> heap_;  // a binary max-heap of candidate ids
+  std::vector<Index> at_;    // each candidate's place in heap_, kNoIndex once popped
+};
+
+// At unit size (points_at_unit_scale).
+std::vector<Vec3> spread_at_unit_size(const TriangleMesh& mesh, std::size_t count,
+                                      std::uint64_t seed) {
+  const AreaSampler sampler(mesh, seed);
+  if (!sampler.has_area()) throw InvalidArgument("cannot sample a surface of zero area");
+  std::vector<Vec3> candidates(kCandidatesPerPoint * count);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096),
+                    [&](const auto& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) candidates[k] = sampler(k);
+                    });
+  // Yuksel's 2 r_max: twice the radius of the discs that, packed as densely as discs can be in
+  // the plane, cover the area with `count` of them (area per disc 2√3 r²).
+  const double reach = 2 * std::sqrt(surface_area(mesh) / (2 * std::sqrt(3.0) * count));
+  const auto weight = [&](Index i, Index j) {
+    const double w = 1 - distance(candidates[i], candidates[j]) / reach, w2 = w * w, w4 = w2 * w2;
+    return w4 * w4;
+  };
+  // Each candidate's neighbours within 2 r_max, in chunks of consecutive candidates (searched in
+  // parallel, each chunk's in order), and its weight: how crowded its neighbourhood is, by
+  // Yuksel's (1 - d / 2 r_max)^8.
+  constexpr Index kChunk = 4096;
+  const auto n = static_cast<Index>(candidates.size());
+  const Index chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<Index>> near(chunks), starts(chunks);
+  std::vector<double> weights(candidates.size(), 0.0);
+  {
+    const PointTree tree(candidates);
+    tbb::parallel_for(Index{0}, chunks, [&](Index c) {
+      std::vector<Index> found;
+      for (Index i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+        starts[c].push_back(static_cast<Index>(near[c].size()));
+        tree.within(candidates[i], reach * reach, found);
+        for (const Index j : found) {
+          if (j == i) continue;
+          near[c].push_back(j);
+          weights[i] += weight(i, j);
+        }
+      }
+      starts[c].push_back(static_cast<Index>(near[c].size()));
+    });
+  }
+  const auto neighbours = [&](Index i) {
+    const std::vector<Index>& in = near[i / kChunk];
+    const std::vector<Index>& at = starts[i / kChunk];
+    return std::span<const Index>(in.data() + at[i % kChunk], in.data() + at[i % kChunk + 1]);
+  };
+  // The most crowded goes, and lightens its neighbours, until `count` are left (serial, so the
+  // same on any thread count).
+  WeightHeap heap(std::move(weights));
+  while (heap.size() > count) {
+    const Index gone = heap.pop();
+    for (const Index j : neighbours(gone))
+      if (heap.contains(j)) heap.lower(j, weight(gone, j));
+  }
+  std::vector<Vec3> points;
+  points.reserve(count);
+  for (Index i = 0; i < candidates.size(); ++i)
+    if (heap.contains(i)) points.push_back(candidates[i]);
+  return points;
+}
+
+}  // namespace
+
+std::vector<Vec3> spread_samples(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
+  return points_at_unit_scale(
+      mesh, [&](const TriangleMesh& unit) { return spread_at_unit_size(unit, count, seed); });
+}
+
+}  // namespace cvtmesh
