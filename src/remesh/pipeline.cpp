@@ -42,12 +42,10 @@ constexpr int kSnapRounds = 2;
 // differs (fully even spacing lost joint.off and triple_vierbein.obj 5-8° at 2k vertices).
 constexpr int kCurveLloydSteps = 30;
 
-// `count` random seeds: evenly spread by area, or with the density of the target lengths (paper
-// §4.1).
-std::vector<Vec3> random_seeds(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
-                               const SizeField* field) {
-  if (!field) return spread_samples(mesh, count, seed);
-  const AreaSampler sampler(mesh, seed, field->seed_weights());
+// `count` random seeds with the density of the target lengths (paper §4.1).
+std::vector<Vec3> seeds_by_density(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
+                                   const SizeField& field) {
+  const AreaSampler sampler(mesh, seed, field.seed_weights());
   std::vector<Vec3> points(count);
   for (std::size_t k = 0; k < count; ++k) points[k] = sampler(k);
   return points;
@@ -144,10 +142,13 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                                 ? unit_vertex_count(mesh, settings, field)
                                 : settings.initial_seeds.size();
   check_memory_for(input.triangles.size(), count);
+  // The caller's; or evenly spread for ρ = 1, else random with the density.
   const bool spread = settings.initial_seeds.empty() && !field;
-  std::vector<Vec3> seeds = settings.initial_seeds.empty()
-                                ? random_seeds(mesh, count, settings.seed, field)
-                                : settings.initial_seeds;
+  std::vector<Vec3> seeds = settings.initial_seeds;
+  if (spread)
+    seeds = spread_samples(mesh, count, settings.seed);
+  else if (seeds.empty())
+    seeds = seeds_by_density(mesh, count, settings.seed, *field);
   // The edge length of the same count spread evenly: the scale of feature detection, and where
   // ρ = 1.
   const double spacing = edge_length_for(surface_area(mesh), seeds.size());
