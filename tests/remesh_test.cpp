@@ -130,8 +130,8 @@ TEST(Remesh, LbfgsReachesAToleranceInFewerEvaluationsThanLloyd) {
   EXPECT_LT(lbfgs.rvd_evaluations, lloyd.rvd_evaluations);
 }
 
-// Spread initial seeds start RCVT half way: it gets half the iteration cap; given seeds, random
-// or not, get it all.
+// Spread initial seeds start RCVT half way: it gets half the iteration cap, with a sizing field
+// too; given seeds, random or not, get it all.
 TEST(Remesh, RcvtFromSpreadSeedsTakesHalfTheIterations) {
   const TriangleMesh m = icosphere(4);
   RemeshSettings s;
@@ -148,6 +148,10 @@ TEST(Remesh, RcvtFromSpreadSeedsTakesHalfTheIterations) {
   // Spread, they start nearer to centroidal than random ones, and end at least as near.
   EXPECT_LT(spread.energy_initial, 0.75 * given.energy_initial);
   EXPECT_LT(spread.energy_final, 1.005 * given.energy_final);
+  s.initial_seeds.clear();
+  s.vertices = 600;
+  s.sizing.edge_length_at = [](const Vec3& p) { return 1.5 + p.z; };
+  EXPECT_EQ(remesh(m, s).iterations, 5);
 }
 
 TEST(Remesh, SameOutputOnOneAndAllThreads) {

@@ -11,6 +11,7 @@
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "geometry/area_sampler.hpp"
 #include "geometry/spread_samples.hpp"
 #include "support/shapes.hpp"
 
@@ -79,6 +80,49 @@ TEST(SpreadSamples, TheSameOnAnyThreadCountAndForTheSameSeedOnly) {
   }
   EXPECT_TRUE(one == two);
   EXPECT_FALSE(one == spread_samples(torus_mesh, 20'000, 8));
+}
+
+// Issue 20: the seeds of a sizing field are spread about its target length apart, as many where
+// it asks for many, and as uniform ones no two close.
+TEST(SpreadSamples, FollowATargetLengthThatVaries) {
+  const TriangleMesh square = mapped_grid(40, 40, [](double u, double v) { return Vec3{u, v, 0}; });
+  // Three times as long at x = 1 as at x = 0.
+  const auto length = [](const Vec3& p) { return 0.02 * (1 + 2 * p.x); };
+  std::vector<double> weights(square.triangles.size());
+  double count = 0;
+  for (std::size_t t = 0; t < weights.size(); ++t) {
+    const auto [a, b, c] = square.corners(t);
+    double per_area = 0;  // points per area: one per √3/2 h²
+    for (const Vec3& p : {a, b, c})
+      per_area += 1 / (std::sqrt(3.0) / 2 * length(p) * length(p)) / 3;
+    weights[t] = triangle_area(a, b, c) * per_area;
+    count += weights[t];
+  }
+  const auto n = static_cast<std::size_t>(count);
+  const auto spacing = [&](std::size_t, const Vec3& p) { return length(p); };
+  const std::vector<Vec3> spread = spread_samples(square, n, 1, weights, spacing);
+  ASSERT_EQ(spread.size(), n);
+  // As many in the finest third as the lengths ask for: ∫ 1 / (√3/2 h²) over x in [0, 1/3].
+  const double h0 = 0.02,
+               in_first_third = (1 - 1 / (1 + 2.0 / 3)) / (2 * std::sqrt(3.0) / 2 * h0 * h0);
+  const auto first_third =
+      std::count_if(spread.begin(), spread.end(), [](const Vec3& p) { return p.x < 1.0 / 3; });
+  EXPECT_NEAR(static_cast<double>(first_third), in_first_third, 0.1 * in_first_third);
+  // No two closer than a quarter of the smaller of their lengths (half of r_max, as for uniform
+  // points); points drawn at random with the same density come far closer.
+  const auto closest_relative = [&](const std::vector<Vec3>& points) {
+    double closest = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < points.size(); ++a)
+      for (std::size_t b = a + 1; b < points.size(); ++b)
+        closest = std::min(closest, distance(points[a], points[b]) /
+                                        std::min(length(points[a]), length(points[b])));
+    return closest;
+  };
+  EXPECT_GT(closest_relative(spread), 0.25);
+  const AreaSampler random(square, 1, weights);
+  std::vector<Vec3> drawn(n);
+  for (std::size_t k = 0; k < n; ++k) drawn[k] = random(k);
+  EXPECT_LT(closest_relative(drawn), 0.05);
 }
 
 TEST(SpreadSamples, TinyAndHugeSurfacesAreSpreadAlike) {

@@ -40,7 +40,7 @@ struct RemeshSettings {
   Optimizer optimizer = Optimizer::lbfgs;
   CvtMode mode = CvtMode::both;     // both: RCVT, then CCVT (paper §4.2)
   std::uint64_t seed = 1;           // random initial seeds: same seed, same output
-  std::vector<Vec3> initial_seeds;  // if not empty: used instead of random seeds
+  std::vector<Vec3> initial_seeds;  // if not empty: used instead of spread ones
   std::function<void(const RemeshProgress&)> progress;  // called once per iteration
   // Polled often (every few milliseconds of work), from any of the worker threads: when it
   // returns true, remesh stops and throws Cancelled. Must be thread-safe and cheap.

@@ -71,26 +71,20 @@ class WeightHeap {
   std::vector<Index> at_;    // each candidate's place in heap_, kNoIndex once popped
 };
 
-// At unit size (points_at_unit_scale).
-std::vector<Vec3> spread_at_unit_size(const TriangleMesh& mesh, std::size_t count,
-                                      std::uint64_t seed) {
-  const AreaSampler sampler(mesh, seed);
-  if (!sampler.has_area()) throw InvalidArgument("cannot sample a surface of zero area");
-  std::vector<Vec3> candidates(kCandidatesPerPoint * count);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096),
-                    [&](const auto& r) {
-                      for (std::size_t k = r.begin(); k < r.end(); ++k) candidates[k] = sampler(k);
-                    });
-  // Yuksel's 2 r_max: twice the radius of the discs that, packed as densely as discs can be in
-  // the plane, cover the area with `count` of them (area per disc 2√3 r²).
-  const double reach = 2 * std::sqrt(surface_area(mesh) / (2 * std::sqrt(3.0) * count));
+// The `count` of `candidates` that sample elimination keeps, each candidate with its reach: the
+// distance within which another crowds it (twice Yuksel's r_max). A pair is near when it is
+// closer than the smaller of the two reaches, so that the neighbour lists are symmetric, as
+// elimination needs, where the reach varies.
+std::vector<Vec3> eliminate(const std::vector<Vec3>& candidates, const std::vector<double>& reach,
+                            std::size_t count) {
   const auto weight = [&](Index i, Index j) {
-    const double w = 1 - distance(candidates[i], candidates[j]) / reach, w2 = w * w, w4 = w2 * w2;
+    const double r = std::min(reach[i], reach[j]);
+    const double w = 1 - distance(candidates[i], candidates[j]) / r, w2 = w * w, w4 = w2 * w2;
     return w4 * w4;
   };
-  // Each candidate's neighbours within 2 r_max, in chunks of consecutive candidates (searched in
-  // parallel, each chunk's in order), and its weight: how crowded its neighbourhood is, by
-  // Yuksel's (1 - d / 2 r_max)^8.
+  // Each candidate's near neighbours, in chunks of consecutive candidates (searched in parallel,
+  // each chunk's in order), and its weight: how crowded its neighbourhood is, by Yuksel's
+  // (1 - d / 2 r_max)^8.
   constexpr Index kChunk = 4096;
   const auto n = static_cast<Index>(candidates.size());
   const Index chunks = (n + kChunk - 1) / kChunk;
@@ -102,9 +96,9 @@ std::vector<Vec3> spread_at_unit_size(const TriangleMesh& mesh, std::size_t coun
       std::vector<Index> found;
       for (Index i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
         starts[c].push_back(static_cast<Index>(near[c].size()));
-        tree.within(candidates[i], reach * reach, found);
+        tree.within(candidates[i], reach[i] * reach[i], found);
         for (const Index j : found) {
-          if (j == i) continue;
+          if (j == i || !(distance(candidates[i], candidates[j]) < reach[j])) continue;
           near[c].push_back(j);
           weights[i] += weight(i, j);
         }
@@ -132,11 +126,41 @@ std::vector<Vec3> spread_at_unit_size(const TriangleMesh& mesh, std::size_t coun
   return points;
 }
 
+// kCandidatesPerPoint × count candidates from `sampler`, and their reaches: `spacing` at each
+// (the target edge length there). With equilateral triangles of side h the discs of radius
+// r_max = h / 2 pack the surface as densely as discs can (2√3 r² each, two triangles a point),
+// so the reach 2 r_max is h itself.
+template <class Spacing>
+std::vector<Vec3> spread_from(const AreaSampler& sampler, std::size_t count,
+                              const Spacing& spacing) {
+  if (!sampler.has_area()) throw InvalidArgument("cannot sample a surface of zero area");
+  std::vector<Vec3> candidates(kCandidatesPerPoint * count);
+  std::vector<double> reach(candidates.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 4096),
+                    [&](const auto& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        const AreaSampler::Sample s = sampler.sample(k);
+                        candidates[k] = s.point;
+                        reach[k] = spacing(s.triangle, s.point);
+                      }
+                    });
+  return eliminate(candidates, reach, count);
+}
+
 }  // namespace
 
 std::vector<Vec3> spread_samples(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
-  return points_at_unit_scale(
-      mesh, [&](const TriangleMesh& unit) { return spread_at_unit_size(unit, count, seed); });
+  return points_at_unit_scale(mesh, [&](const TriangleMesh& unit) {
+    // Equilateral triangles of side h, two per point: area / count = √3/2 h².
+    const double h = std::sqrt(surface_area(unit) / (std::sqrt(3.0) / 2 * count));
+    return spread_from(AreaSampler(unit, seed), count, [h](std::size_t, const Vec3&) { return h; });
+  });
+}
+
+std::vector<Vec3> spread_samples(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
+                                 const std::vector<double>& weights,
+                                 const std::function<double(std::size_t, const Vec3&)>& spacing) {
+  return spread_from(AreaSampler(mesh, seed, weights), count, spacing);
 }
 
 }  // namespace cvtmesh
