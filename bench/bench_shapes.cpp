@@ -10,12 +10,18 @@
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
 //     rounds (remesh/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
+//   BM_ProjectMoved/M: 20k points on a torus of 40k triangles, each moved at random by up to M%
+//     of the points' spacing, projected again from their feet before (as CCVT projects its seeds
+//     every evaluation, cvt/cvt_objective) against without a hint; counters hinted_s, fresh_s,
+//     hinted_over_fresh, and differing (feet the two find at different distances: must be 0).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <random>
 
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
+#include "cvtmesh/sampling.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/fit_surface.hpp"
 #include "remesh/improve_shapes.hpp"
@@ -89,5 +95,38 @@ void BM_FitSurface(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FitSurface)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_ProjectMoved(benchmark::State& state) {
+  const TriangleMesh torus = testing::torus(1.0, 0.3, 200, 100);
+  const SurfaceProjector surface(torus);
+  const std::size_t n = 20'000;
+  const std::vector<Vec3> points = sample_surface(torus, n, 1);
+  std::vector<SurfaceProjector::Foot> feet;
+  for (const Vec3& p : points) feet.push_back(surface.nearest(p));
+  const double spacing = std::sqrt(surface_area(torus) / static_cast<double>(n));
+  std::mt19937_64 random(2);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double step = 0.01 * static_cast<double>(state.range(0)) * spacing;
+  std::vector<Vec3> moved = points;
+  for (Vec3& p : moved) p = p + step * Vec3{u(random), u(random), u(random)};
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<SurfaceProjector::Foot> hinted(n), fresh(n);
+    for (std::size_t k = 0; k < n; ++k) hinted[k] = surface.nearest(moved[k], feet[k]);
+    const double hinted_s = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k < n; ++k) fresh[k] = surface.nearest(moved[k]);
+    const double fresh_s = seconds_since(start);
+    state.SetIterationTime(hinted_s);
+    std::size_t differing = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      differing += distance(moved[k], hinted[k].point) != distance(moved[k], fresh[k].point);
+    state.counters["hinted_s"] = hinted_s;
+    state.counters["fresh_s"] = fresh_s;
+    state.counters["hinted_over_fresh"] = hinted_s / fresh_s;
+    state.counters["differing"] = static_cast<double>(differing);
+  }
+}
+BENCHMARK(BM_ProjectMoved)->Arg(10)->Arg(50)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 }  // namespace

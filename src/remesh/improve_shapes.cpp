@@ -73,6 +73,9 @@ constexpr double kSearchBelow = 0.7;
 // right triangles, 35°), each collapse could otherwise find one better and take it.
 constexpr std::size_t kCollapsesPer = 100;
 
+// A start gap not measured yet (gaps are distances, never negative).
+constexpr double kNotMeasured = -1;
+
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const TriangleShape s = triangle_shape(a, b, c);
   return s.min_angle < kMinAngleDeg || s.quality < kMinQuality;
@@ -109,14 +112,19 @@ class ShapeImprover {
         support_(std::move(support)),
         features_(features),
         start_(mesh.vertices),
+        start_triangles_(mesh.triangles),
+        start_around_(triangles_around(mesh)),
         gone_(mesh.triangles.size(), false),
         collapse_budget_(mesh.vertices.size() / kCollapsesPer),
         floor_(mesh_shape()),
-        around_(triangles_around(mesh)) {
+        around_(start_around_) {
     support_.resize(mesh_.vertices.size());
+    // A gap costs projections, and most vertices never move: each is measured when first needed
+    // (on bunny.off at 5k, all of them were half the cost of this step).
+    start_gap_.assign(mesh_.vertices.size(), kNotMeasured);
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
       if (!may_move(v)) support_[v].kind = VertexSupport::Kind::fixed;
-      start_gap_.push_back(support_[v].kind == VertexSupport::Kind::fixed ? 0 : gap_around(v));
+      if (support_[v].kind == VertexSupport::Kind::fixed) start_gap_[v] = 0;
     }
   }
 
@@ -322,6 +330,18 @@ class ShapeImprover {
   double gap_around(Index v) const {
     double gap = 0;
     for (Index t : around_[v]) gap = std::max(gap, gap_at(centroid(t)));
+    return gap;
+  }
+  // gap_around(v) as it was at the start, from the triangles then.
+  double start_gap(Index v) const {
+    double& gap = start_gap_[v];
+    if (gap == kNotMeasured) {
+      gap = 0;
+      for (Index t : start_around_[v]) {
+        const Triangle& f = start_triangles_[t];
+        gap = std::max(gap, gap_at((1.0 / 3) * (start_[f[0]] + start_[f[1]] + start_[f[2]])));
+      }
+    }
     return gap;
   }
   // How far `p` is from the triangles at `v`.
@@ -603,7 +623,7 @@ class ShapeImprover {
       replace_features(along_x, along_y);
     }
     // No triangle that stays may fold over, nor leave the surface.
-    bool kept = gap_around(y) <= allowed_gap(std::max(start_gap_[x], start_gap_[y]), spanned);
+    bool kept = gap_around(y) <= allowed_gap(std::max(start_gap(x), start_gap(y)), spanned);
     for (std::size_t k = 0; kept && k < at_x.size(); ++k) {
       if (gone_[at_x[k]]) continue;
       const auto [u, v, w] = mesh_.corners(at_x[k]);
@@ -739,7 +759,7 @@ class ShapeImprover {
       const Vec3 n = unit_normal(a, b, c);
       if (no_direction(n) || dot(n, normals[k]) < kTurnCos) return false;
     }
-    const double allowed = allowed_gap(start_gap_[v], distance(start_[v], mesh_.vertices[v]));
+    const double allowed = allowed_gap(start_gap(v), distance(start_[v], mesh_.vertices[v]));
     return gap_around(v) <= allowed && distance_to_star(start_[v], v) <= allowed;
   }
 
@@ -749,8 +769,11 @@ class ShapeImprover {
   std::vector<VertexSupport> support_;
   std::vector<Edge>& features_;    // sorted; a collapse along a curve renames one
   const std::vector<Vec3> start_;  // the vertices where they were
-  std::vector<double> start_gap_;  // per vertex, gap_around it then
-  std::vector<bool> gone_;         // per triangle: taken away by a collapse
+  // The triangles then (those that go stay, marked gone_), and each vertex's.
+  const std::vector<Triangle> start_triangles_;
+  const std::vector<std::vector<Index>> start_around_;
+  mutable std::vector<double> start_gap_;  // per vertex, start_gap once measured
+  std::vector<bool> gone_;                 // per triangle: taken away by a collapse
   std::size_t collapse_budget_;
   WorstShape floor_;  // the mesh's worst Q and θmin at the start, then where balance() began
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
