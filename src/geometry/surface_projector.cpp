@@ -3,7 +3,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
 #include <optional>
@@ -14,7 +14,10 @@
 namespace cvtmesh {
 
 namespace {
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+// Plain doubles: a nearest point is a construction, rounded whatever the kernel, and the filtered
+// box-sphere tests of an exact-predicates kernel only decide which boxes the search opens, a
+// rounding's difference at most (spool.off at 5k: the whole remesh 8% faster).
+using Kernel = CGAL::Simple_cartesian<double>;
 using Triangles = std::vector<Kernel::Triangle_3>;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
 using AabbTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
