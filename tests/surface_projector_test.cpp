@@ -1,0 +1,105 @@
+// The nearest surface points that CCVT, shape improvement, the fit and the Hausdorff report
+// project onto: the nearest of all triangles, from any hint, on fine and coarse surfaces and
+// between two sheets close together.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "geometry/surface_projector.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using namespace cvtmesh::testing;
+
+double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
+  return distance(p, a + t * ab);
+}
+
+// By brute force: inside the triangle's prism, the distance to its plane; else to its edges.
+double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = cross(b - a, c - a);
+  const bool inside = dot(cross(b - a, p - a), n) >= 0 && dot(cross(c - b, p - b), n) >= 0 &&
+                      dot(cross(a - c, p - c), n) >= 0;
+  if (inside) return std::abs(dot(p - a, n)) / norm(n);
+  return std::min(
+      {distance_to_segment(p, a, b), distance_to_segment(p, b, c), distance_to_segment(p, c, a)});
+}
+
+double distance_to_mesh(const TriangleMesh& mesh, const Vec3& p) {
+  double d = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    d = std::min(d, distance_to_triangle(p, a, b, c));
+  }
+  return d;
+}
+
+// Random points in the box around the mesh, grown by `margin`.
+std::vector<Vec3> points_around(const TriangleMesh& mesh, double margin, std::size_t n) {
+  Vec3 lo = mesh.vertices[0], hi = lo;
+  for (const Vec3& v : mesh.vertices) {
+    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
+    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+  }
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> points(n);
+  for (Vec3& p : points)
+    p = {lo.x - margin + u(random) * (hi.x - lo.x + 2 * margin),
+         lo.y - margin + u(random) * (hi.y - lo.y + 2 * margin),
+         lo.z - margin + u(random) * (hi.z - lo.z + 2 * margin)};
+  return points;
+}
+
+// Every foot is the nearest point of the surface (up to rounding), on the triangle it names,
+// whose unit normal it carries; and a hint anywhere on the surface finds the same distance.
+void expect_nearest(const TriangleMesh& mesh, const std::vector<Vec3>& points) {
+  const SurfaceProjector surface(mesh);
+  const SurfaceProjector::Foot far_hint = surface.nearest(points.back());
+  for (const Vec3& p : points) {
+    const double expected = distance_to_mesh(mesh, p);
+    const SurfaceProjector::Foot foot = surface.nearest(p);
+    EXPECT_NEAR(distance(p, foot.point), expected, 1e-12);
+    EXPECT_NEAR(distance(p, surface.nearest(p, far_hint).point), expected, 1e-12);
+    const auto [a, b, c] = mesh.corners(surface.surface_triangle(foot.triangle));
+    EXPECT_NEAR(distance_to_triangle(foot.point, a, b, c), 0, 1e-12);
+    const Vec3 n = cross(b - a, c - a);
+    EXPECT_NEAR(dot(foot.normal, (1 / norm(n)) * n), 1, 1e-12);
+    EXPECT_NEAR(surface.squared_distance_to(p, foot.triangle), expected * expected, 1e-12);
+  }
+}
+
+TEST(SurfaceProjector, FindsTheNearestPointOfAFineSurface) {
+  const TriangleMesh ring = torus(1.0, 0.3, 48, 16);
+  expect_nearest(ring, points_around(ring, 0.2, 400));
+}
+
+TEST(SurfaceProjector, FindsTheNearestPointOfACoarseSurface) {
+  // 12 triangles, each far larger than the distances asked about.
+  const TriangleMesh box = cube(1);
+  expect_nearest(box, points_around(box, 0.5, 400));
+}
+
+TEST(SurfaceProjector, TellsTwoSheetsCloseTogetherApart) {
+  // Two unit squares 1e-3 apart, the points between and around them.
+  TriangleMesh sheets;
+  for (const double z : {0.0, 1e-3}) {
+    const auto base = static_cast<Index>(sheets.vertices.size());
+    sheets.vertices.insert(sheets.vertices.end(), {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}});
+    add_quad(sheets, base, base + 1, base + 2, base + 3);
+  }
+  std::vector<Vec3> points = points_around(sheets, 1e-3, 300);
+  for (std::size_t k = 0; k < 100; ++k)
+    points.push_back({0.01 * static_cast<double>(k), 0.5, 1e-3 * static_cast<double>(k % 5) / 4});
+  expect_nearest(sheets, points);
+}
+
+}  // namespace
+}  // namespace cvtmesh
