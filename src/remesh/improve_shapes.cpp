@@ -112,15 +112,14 @@ class ShapeImprover {
         support_(std::move(support)),
         features_(features),
         start_(mesh.vertices),
-        start_triangles_(mesh.triangles),
-        start_around_(triangles_around(mesh)),
         gone_(mesh.triangles.size(), false),
         collapse_budget_(mesh.vertices.size() / kCollapsesPer),
         floor_(mesh_shape()),
-        around_(start_around_) {
+        around_(triangles_around(mesh)) {
     support_.resize(mesh_.vertices.size());
-    // A gap costs projections, and most vertices never move: each is measured when first needed
-    // (on bunny.off at 5k, all of them were half the cost of this step).
+    // A gap costs projections, and most vertices never move: each is measured when first needed,
+    // or before its triangles first change (on bunny.off at 5k, all of them were half the cost
+    // of this step).
     start_gap_.assign(mesh_.vertices.size(), kNotMeasured);
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
       if (!may_move(v)) support_[v].kind = VertexSupport::Kind::fixed;
@@ -332,13 +331,15 @@ class ShapeImprover {
     for (Index t : around_[v]) gap = std::max(gap, gap_at(centroid(t)));
     return gap;
   }
-  // gap_around(v) as it was at the start, from the triangles then.
+  // gap_around(v) as it was at the start: from v's triangles, which are those of the start until
+  // a flip or collapse changes them (each measures the gaps of the vertices whose triangles it
+  // changes first), with their vertices where they were then.
   double start_gap(Index v) const {
     double& gap = start_gap_[v];
     if (gap == kNotMeasured) {
       gap = 0;
-      for (Index t : start_around_[v]) {
-        const Triangle& f = start_triangles_[t];
+      for (Index t : around_[v]) {
+        const Triangle& f = mesh_.triangles[t];
         gap = std::max(gap, gap_at((1.0 / 3) * (start_[f[0]] + start_[f[1]] + start_[f[2]])));
       }
     }
@@ -400,6 +401,7 @@ class ShapeImprover {
 
   void flip(const Quad& q) {
     const auto [t1, t2, a, b, c, d] = q;
+    for (const Index v : {a, b, c, d}) start_gap(v);
     mesh_.triangles[t1] = {c, a, d};
     mesh_.triangles[t2] = {d, b, c};
     std::erase(around_[a], t2);
@@ -597,7 +599,10 @@ class ShapeImprover {
     }
     std::vector<std::pair<Index, std::vector<Index>>> stars;
     for (Index s : at_x)
-      for (Index w : mesh_.triangles[s]) stars.push_back({w, around_[w]});
+      for (Index w : mesh_.triangles[s]) {
+        stars.push_back({w, around_[w]});
+        start_gap(w);
+      }
     const double spanned = distance(mesh_.vertices[x], mesh_.vertices[y]);
     // The collapse: triangles with both x and y go, the others at x take y instead.
     for (std::size_t k = 0; k < at_x.size(); ++k) {
@@ -767,11 +772,8 @@ class ShapeImprover {
   const SurfaceProjector& surface_;
   const CurveProjector* curves_;
   std::vector<VertexSupport> support_;
-  std::vector<Edge>& features_;    // sorted; a collapse along a curve renames one
-  const std::vector<Vec3> start_;  // the vertices where they were
-  // The triangles then (those that go stay, marked gone_), and each vertex's.
-  const std::vector<Triangle> start_triangles_;
-  const std::vector<std::vector<Index>> start_around_;
+  std::vector<Edge>& features_;            // sorted; a collapse along a curve renames one
+  const std::vector<Vec3> start_;          // the vertices where they were
   mutable std::vector<double> start_gap_;  // per vertex, start_gap once measured
   std::vector<bool> gone_;                 // per triangle: taken away by a collapse
   std::size_t collapse_budget_;
