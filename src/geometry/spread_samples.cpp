@@ -9,6 +9,7 @@
 
 #include "cvtmesh/errors.hpp"
 #include "geometry/area_sampler.hpp"
+#include "geometry/even_spacing.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_scale.hpp"
 
@@ -77,14 +78,13 @@ class WeightHeap {
 // elimination needs, where the reach varies.
 std::vector<Vec3> eliminate(const std::vector<Vec3>& candidates, const std::vector<double>& reach,
                             std::size_t count) {
-  const auto weight = [&](Index i, Index j) {
-    const double r = std::min(reach[i], reach[j]);
-    const double w = 1 - distance(candidates[i], candidates[j]) / r, w2 = w * w, w4 = w2 * w2;
+  // Yuksel's (1 - d / 2 r_max)^8, for a pair at distance d.
+  const auto weight = [&](Index i, Index j, double d) {
+    const double w = 1 - d / std::min(reach[i], reach[j]), w2 = w * w, w4 = w2 * w2;
     return w4 * w4;
   };
   // Each candidate's near neighbours, in chunks of consecutive candidates (searched in parallel,
-  // each chunk's in order), and its weight: how crowded its neighbourhood is, by Yuksel's
-  // (1 - d / 2 r_max)^8.
+  // each chunk's in order), and its weight: how crowded its neighbourhood is.
   constexpr Index kChunk = 4096;
   const auto n = static_cast<Index>(candidates.size());
   const Index chunks = (n + kChunk - 1) / kChunk;
@@ -98,9 +98,10 @@ std::vector<Vec3> eliminate(const std::vector<Vec3>& candidates, const std::vect
         starts[c].push_back(static_cast<Index>(near[c].size()));
         tree.within(candidates[i], reach[i] * reach[i], found);
         for (const Index j : found) {
-          if (j == i || !(distance(candidates[i], candidates[j]) < reach[j])) continue;
+          const double d = distance(candidates[i], candidates[j]);
+          if (j == i || !(d < reach[j])) continue;
           near[c].push_back(j);
-          weights[i] += weight(i, j);
+          weights[i] += weight(i, j, d);
         }
       }
       starts[c].push_back(static_cast<Index>(near[c].size()));
@@ -117,7 +118,8 @@ std::vector<Vec3> eliminate(const std::vector<Vec3>& candidates, const std::vect
   while (heap.size() > count) {
     const Index gone = heap.pop();
     for (const Index j : neighbours(gone))
-      if (heap.contains(j)) heap.lower(j, weight(gone, j));
+      if (heap.contains(j))
+        heap.lower(j, weight(gone, j, distance(candidates[gone], candidates[j])));
   }
   std::vector<Vec3> points;
   points.reserve(count);
@@ -151,8 +153,7 @@ std::vector<Vec3> spread_from(const AreaSampler& sampler, std::size_t count,
 
 std::vector<Vec3> spread_samples(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed) {
   return points_at_unit_scale(mesh, [&](const TriangleMesh& unit) {
-    // Equilateral triangles of side h, two per point: area / count = √3/2 h².
-    const double h = std::sqrt(surface_area(unit) / (std::sqrt(3.0) / 2 * count));
+    const double h = edge_length_for(surface_area(unit), count);
     return spread_from(AreaSampler(unit, seed), count, [h](std::size_t, const Vec3&) { return h; });
   });
 }

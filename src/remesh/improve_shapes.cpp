@@ -401,7 +401,8 @@ class ShapeImprover {
 
   void flip(const Quad& q) {
     const auto [t1, t2, a, b, c, d] = q;
-    for (const Index v : {a, b, c, d}) start_gap(v);
+    for (const Index v : {a, b, c, d})
+      start_gap(v);  // measured while their triangles are the start's
     mesh_.triangles[t1] = {c, a, d};
     mesh_.triangles[t2] = {d, b, c};
     std::erase(around_[a], t2);
@@ -601,7 +602,7 @@ class ShapeImprover {
     for (Index s : at_x)
       for (Index w : mesh_.triangles[s]) {
         stars.push_back({w, around_[w]});
-        start_gap(w);
+        start_gap(w);  // measured while its triangles are the start's
       }
     const double spanned = distance(mesh_.vertices[x], mesh_.vertices[y]);
     // The collapse: triangles with both x and y go, the others at x take y instead.

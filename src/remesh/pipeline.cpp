@@ -68,10 +68,6 @@ double scale_before_sizing(const TriangleMesh& mesh, const RemeshSettings& s) {
   return s.edge_length != 0 ? s.edge_length : s.edge_length_rel * bounding_box(mesh).diagonal();
 }
 
-double edge_length_for(double area, std::size_t n) {
-  return std::sqrt(area / (std::sqrt(3.0) / 2 * static_cast<double>(n)));
-}
-
 // One output size at most; none only for initial seeds (their count is the size) or target
 // lengths given as they are (RemeshSettings).
 void check_output_size(const RemeshSettings& s) {

@@ -6,14 +6,11 @@
 #include <vector>
 
 #include "cvtmesh/remesh.hpp"
+#include "geometry/even_spacing.hpp"  // edge_length_for, which the pipeline's callers use too
 
 namespace cvtmesh {
 
 class SizeField;
-
-// The edge length of N seeds spread evenly over area A as equilateral triangles (about two
-// triangles per vertex): the inverse of requested_vertex_count's formula.
-double edge_length_for(double area, std::size_t n);
 
 // Throws InvalidArgument unless the settings give one output size at most, and none only for
 // initial seeds (their count is the size) or target lengths given as they are.
