@@ -1,6 +1,8 @@
 // Triangle quality and angle figures, checked on triangles whose values are known by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -43,6 +45,32 @@ TEST(TriangleShape, QualityIsInvariantUnderScalingAndMotion) {
       triangle_shape({5, 5, 5}, {5 + 1e3, 5 + 0.2e3, 5}, {5 + 0.3e3, 5 + 0.9e3, 5 + 0.1e3});
   EXPECT_NEAR(a.quality, b.quality, 1e-12);
   EXPECT_NEAR(a.min_angle, b.min_angle, 1e-9);
+}
+
+TEST(TriangleShape, AnglesAreTheSmallestAndLargestOfTheThreeInAnyCornerOrder) {
+  // Measured only at the corners facing the shortest and the longest edge: checked against all
+  // three angles by the law of cosines, on triangles from near-equilateral to needles and caps.
+  const std::array<std::array<Vec3, 3>, 5> triangles{{
+      {{{0, 0, 0}, {1, 0.2, 0}, {0.3, 0.9, 0.1}}},
+      {{{0, 0, 0}, {1, 0, 0}, {0.5, 0.866, 0.001}}},
+      {{{0, 0, 0}, {10, 0, 0}, {10.01, 0.02, 0}}},  // needle
+      {{{0, 0, 0}, {1, 0, 0}, {0.5, 1e-4, 0}}},     // cap
+      {{{1, 2, 3}, {1.5, 2.1, 2.7}, {0.7, 2.9, 3.3}}},
+  }};
+  for (const auto& t : triangles) {
+    const auto angle = [](const Vec3& p, const Vec3& u, const Vec3& v) {
+      const long double a2 = dot(u - p, u - p), b2 = dot(v - p, v - p), c2 = dot(u - v, u - v);
+      return static_cast<double>(std::acos((a2 + b2 - c2) / (2 * std::sqrt(a2 * b2))) * kDeg);
+    };
+    const std::array<double, 3> all{angle(t[0], t[1], t[2]), angle(t[1], t[2], t[0]),
+                                    angle(t[2], t[0], t[1])};
+    for (const auto& [i, j, k] : {std::array{0, 1, 2}, std::array{1, 2, 0}, std::array{2, 0, 1},
+                                  std::array{0, 2, 1}, std::array{2, 1, 0}, std::array{1, 0, 2}}) {
+      const TriangleShape s = triangle_shape(t[i], t[j], t[k]);
+      EXPECT_NEAR(s.min_angle, *std::min_element(all.begin(), all.end()), 1e-5);
+      EXPECT_NEAR(s.max_angle, *std::max_element(all.begin(), all.end()), 1e-5);
+    }
+  }
 }
 
 TEST(TriangleShape, DegenerateTrianglesHaveZeroQuality) {

@@ -1,24 +1,30 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "cvtmesh/quality.hpp"
-#include "geometry/angle.hpp"
 
 namespace cvtmesh {
 
 TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double la = distance(b, c), lb = distance(c, a), lc = distance(a, b);
   if (la == 0 || lb == 0 || lc == 0) return {0, 0, 180};
-  const double area = triangle_area(a, b, c);
+  // One cross product for the area and all three angles (its norm is twice the area at every
+  // corner), and an angle only at the corners facing the shortest and the longest edge, where
+  // the smallest and the largest angle are: shape improvement measures shapes by the million.
+  const double twice_area = norm(cross(b - a, c - a));
   const double half_perimeter = 0.5 * (la + lb + lc);
   const double longest = std::max({la, lb, lc});
   // Paper §5: Q_t = 6/√3 · A/(p·h).
-  const double q = 6.0 / std::sqrt(3.0) * area / (half_perimeter * longest);
-  const double alpha = angle_deg(b - a, c - a);
-  const double beta = angle_deg(a - b, c - b);
-  const double gamma = angle_deg(a - c, b - c);
-  return {q, std::min({alpha, beta, gamma}), std::max({alpha, beta, gamma})};
+  const double q = 3.0 / std::sqrt(3.0) * twice_area / (half_perimeter * longest);
+  const auto angle_at = [&](const Vec3& p, const Vec3& u, const Vec3& v) {
+    return 180 / std::numbers::pi * std::atan2(twice_area, dot(u - p, v - p));
+  };
+  const auto facing = [&](double l) {
+    return l == la ? angle_at(a, b, c) : l == lb ? angle_at(b, c, a) : angle_at(c, a, b);
+  };
+  return {q, facing(std::min({la, lb, lc})), facing(longest)};
 }
 
 QualityReport measure_quality(const TriangleMesh& given) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -115,7 +116,10 @@ class ShapeImprover {
         gone_(mesh.triangles.size(), false),
         collapse_budget_(mesh.vertices.size() / kCollapsesPer),
         floor_(mesh_shape()),
-        around_(triangles_around(mesh)) {
+        around_(triangles_around(mesh)),
+        changed_at_(mesh.vertices.size(), 0),
+        stuck_at_(mesh.vertices.size(), 0),
+        balance_failed_at_(mesh.triangles.size(), 0) {
     support_.resize(mesh_.vertices.size());
     // A gap costs projections, and most vertices never move: each is measured when first needed,
     // or before its triangles first change (on bunny.off at 5k, all of them were half the cost
@@ -158,7 +162,10 @@ class ShapeImprover {
   // the mesh's worst Q and θmin as they are now as the floor that no change, here or in the
   // sweeps after, may go under. Returns whether anything changed.
   bool balance(ShapeImprovement& done) {
+    const WorstShape was = floor_;
     floor_ = mesh_shape();
+    // A higher floor lets fewer changes through: a vertex stuck under the old one stays stuck.
+    if (floor_.quality < was.quality || floor_.angle < was.angle) floor_at_ = ++clock_;
     std::vector<std::pair<double, Index>> worst_first;
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
       if (!gone_[t] && bad(t)) worst_first.push_back({worst_of(std::array{t}).score(), t});
@@ -167,13 +174,15 @@ class ShapeImprover {
     for (const auto& worst : worst_first) {
       const Index t = worst.second;
       const auto balancing = [&](Index a, Index b) { return try_balancing_flip(t, a, b, done); };
-      if (gone_[t] || !bad(t)) continue;
+      if (gone_[t] || !bad(t) || balance_stuck(t)) continue;
       if (flip_an_edge(t, balancing)) {
         ++done.flips;
         changed = true;
       } else if (try_collapse(t, done)) {
         ++done.collapses;
         changed = true;
+      } else {
+        balance_failed_at_[t] = ++clock_;
       }
     }
     return changed;
@@ -405,6 +414,7 @@ class ShapeImprover {
       start_gap(v);  // measured while their triangles are the start's
     mesh_.triangles[t1] = {c, a, d};
     mesh_.triangles[t2] = {d, b, c};
+    for (const Index v : {a, b, c, d}) changed(v);
     std::erase(around_[a], t2);
     std::erase(around_[b], t1);
     around_[c].push_back(t2);
@@ -461,6 +471,7 @@ class ShapeImprover {
     // The quad's vertices and their neighbours move: the four alone often cannot even out the
     // angles that the new valences ask for.
     const Region region = region_at(quad);
+    const Stamps saved = stamps_of(region.vertices);
     const Triangle f1 = mesh_.triangles[q->t1], f2 = mesh_.triangles[q->t2];
     std::array<std::vector<Index>, 4> stars;
     for (int k = 0; k < 4; ++k) stars[k] = around_[quad[k]];
@@ -469,6 +480,7 @@ class ShapeImprover {
     for (int k = 0; k < 4; ++k) around_[quad[k]] = std::move(stars[k]);
     mesh_.triangles[q->t1] = f1;
     mesh_.triangles[q->t2] = f2;
+    put_back(saved);
     return false;
   }
 
@@ -589,6 +601,9 @@ class ShapeImprover {
   bool try_collapse(Index x, Index y, ShapeImprovement& done) {
     const std::vector<Index> neighbours_before = neighbours(x);
     const Region region = region_at(std::array{x, y}, x);
+    std::vector<Index> touched = region.vertices;
+    touched.push_back(x);
+    const Stamps saved = stamps_of(touched);
     // Saved for an undo: the triangles at x, the stars that change.
     const std::vector<Index> at_x = around_[x];
     std::vector<Triangle> old_triangles;
@@ -609,6 +624,7 @@ class ShapeImprover {
     for (std::size_t k = 0; k < at_x.size(); ++k) {
       const Index s = at_x[k];
       Triangle& tri = mesh_.triangles[s];
+      for (Index w : tri) changed(w);
       if (std::ranges::find(tri, y) != tri.end()) {
         gone_[s] = true;
         for (Index w : tri) std::erase(around_[w], s);
@@ -644,6 +660,7 @@ class ShapeImprover {
     for (auto& [w, star] : stars) around_[w] = std::move(star);
     around_[x] = at_x;
     replace_features(along_y, along_x);
+    put_back(saved);
     return false;
   }
 
@@ -652,6 +669,7 @@ class ShapeImprover {
   // that star is still badly shaped, by a compass search for its best place on the surface (or
   // along its curve). Returns whether it moved.
   bool try_move(Index v) {
+    if (stuck(v)) return false;
     std::vector<Vec3>& p = mesh_.vertices;
     const Vec3 from = p[v];
     std::vector<Vec3> normals;
@@ -695,8 +713,64 @@ class ShapeImprover {
       }
     }
     if (best.score() < kSearchBelow) at = searched_from(v, at, better_at, promising);
+    // It moves exactly when it found a better place (better_than asks for a higher score).
+    if (at == from) {
+      stuck_at_[v] = ++clock_;
+      return false;
+    }
     p[v] = at;
-    return best.score() > before.score();
+    changed(v);
+    return true;
+  }
+
+  // A vertex's position or its triangles changed: the moves of it and its neighbours that found
+  // nothing better may find something now.
+  void changed(Index v) { changed_at_[v] = ++clock_; }
+
+  // Whether balancing at triangle t failed since when nothing it reads changed: the positions and
+  // triangles of the vertices three rings out from t's (its flips' and collapses' regions, and
+  // their moves' stars), and the floor. (The collapse budget only shrinks.)
+  bool balance_stuck(Index t) const {
+    const std::uint64_t at = balance_failed_at_[t];
+    if (at == 0 || at < floor_at_) return false;
+    std::vector<Index> reach(mesh_.triangles[t].begin(), mesh_.triangles[t].end());
+    for (int k = 0; k < 3; ++k) reach = ring(reach);
+    return std::ranges::all_of(reach, [&](Index w) { return changed_at_[w] < at; });
+  }
+
+  // The stamps of some vertices, put back where a change is undone: the mesh is then exactly as
+  // it was, and the vertices stuck before it are stuck again (without, each balancing attempt
+  // that failed made every sweep after it search its whole region again).
+  struct Stamps {
+    std::vector<Index> vertices;
+    std::vector<std::uint64_t> changed_at, stuck_at;
+  };
+  Stamps stamps_of(const std::vector<Index>& vertices) const {
+    Stamps s{vertices, {}, {}};
+    for (Index v : vertices) {
+      s.changed_at.push_back(changed_at_[v]);
+      s.stuck_at.push_back(stuck_at_[v]);
+    }
+    return s;
+  }
+  void put_back(const Stamps& s) {
+    for (std::size_t k = 0; k < s.vertices.size(); ++k) {
+      changed_at_[s.vertices[k]] = s.changed_at[k];
+      stuck_at_[s.vertices[k]] = s.stuck_at[k];
+    }
+  }
+
+  // Whether try_move(v) found no better place for v since when nothing it reads changed: v's
+  // position and triangles, its neighbours' positions, and the floor. It would find none again
+  // (it is deterministic), and such repeated searches, each projecting dozens of points, were
+  // most of this step on inputs whose output keeps badly shaped triangles (femur.off at 1k).
+  bool stuck(Index v) const {
+    const std::uint64_t at = stuck_at_[v];
+    if (at == 0 || at < floor_at_) return false;
+    for (Index t : around_[v])
+      for (Index w : mesh_.triangles[t])
+        if (changed_at_[w] > at) return false;
+    return changed_at_[v] < at;
   }
 
   // The compass search of try_move, from `at`: returns the best place found. On the surface, a
@@ -780,6 +854,12 @@ class ShapeImprover {
   std::size_t collapse_budget_;
   WorstShape floor_;  // the mesh's worst Q and θmin at the start, then where balance() began
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
+  // The clock of stuck(): counts changes. Per vertex, when its position or triangles last
+  // changed, and when try_move last found it no better place (0: never); when the floor was set.
+  std::uint64_t clock_ = 0;
+  std::vector<std::uint64_t> changed_at_, stuck_at_;
+  std::vector<std::uint64_t> balance_failed_at_;  // per triangle: when balancing there failed
+  std::uint64_t floor_at_ = 0;
 };
 
 }  // namespace
