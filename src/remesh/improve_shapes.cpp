@@ -762,8 +762,8 @@ class ShapeImprover {
 
   // Whether try_move(v) found no better place for v since when nothing it reads changed: v's
   // position and triangles, its neighbours' positions, and the floor. It would find none again
-  // (it is deterministic), and such repeated searches, each projecting dozens of points, were
-  // most of this step on inputs whose output keeps badly shaped triangles (femur.off at 1k).
+  // (it is deterministic); such repeated searches, each projecting dozens of points, were a
+  // quarter of this step's on an output that keeps badly shaped triangles (femur.off at 1k).
   bool stuck(Index v) const {
     const std::uint64_t at = stuck_at_[v];
     if (at == 0 || at < floor_at_) return false;
