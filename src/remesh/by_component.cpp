@@ -11,6 +11,7 @@
 #include "features/edge_uses.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
+#include "geometry/even_spacing.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/union_find.hpp"
 #include "quality/hausdorff_with_tree.hpp"

@@ -15,6 +15,7 @@
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
+#include "geometry/even_spacing.hpp"
 #include "geometry/spread_samples.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "cvtmesh/remesh.hpp"
-#include "geometry/even_spacing.hpp"  // edge_length_for, which the pipeline's callers use too
 
 namespace cvtmesh {
 
