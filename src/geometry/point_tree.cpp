@@ -47,8 +47,11 @@ Index PointTree::operator()(const Vec3& p) const {
 }
 
 void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const {
-  std::vector<std::size_t> indices(k);
-  std::vector<double> d2(k);
+  // Per thread, not per query: the RVD asks for every seed's neighbours in most evaluations.
+  thread_local std::vector<std::size_t> indices;
+  thread_local std::vector<double> d2;
+  indices.resize(k);
+  d2.resize(k);
   const double query[3] = {p.x, p.y, p.z};
   const std::size_t found = tree_->index.knnSearch(query, k, indices.data(), d2.data());
   out.assign(indices.begin(), indices.begin() + static_cast<std::ptrdiff_t>(found));

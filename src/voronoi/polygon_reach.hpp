@@ -11,14 +11,17 @@
 namespace cvtmesh {
 
 // The largest squared distance from `seed` to the polygon, rounded up past every vertex's
-// error: the polygon is convex, so its farthest point from the seed is a vertex.
+// error: the polygon is convex, so its farthest point from the seed is a vertex. One square root
+// per polygon, not per vertex (it ran after every cut of the RVD's clipping): the largest
+// distance plus the largest error bounds each vertex's distance plus its own.
 inline double squared_reach(const Vec3& seed, std::span<const RvdVertex> polygon) {
-  double r2 = 0;
+  double d2 = 0, error = 0;
   for (const RvdVertex& v : polygon) {
-    const double r = norm(v.point - seed) + std::sqrt(3.0) * v.error;
-    r2 = std::max(r2, r * r);
+    d2 = std::max(d2, dot(v.point - seed, v.point - seed));
+    error = std::max(error, v.error);
   }
-  return r2 * (1 + 1e-10);
+  const double r = std::sqrt(d2) + std::sqrt(3.0) * error;
+  return r * r * (1 + 1e-10);
 }
 
 }  // namespace cvtmesh
