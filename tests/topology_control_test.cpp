@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <random>
 
 #include "cvt/cell_islands.hpp"
 #include "cvtmesh/errors.hpp"
@@ -19,6 +20,7 @@
 #include "features/feature_seeds.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/flip_links.hpp"
+#include "remesh/make_manifold.hpp"
 #include "remesh/mend_topology.hpp"
 #include "remesh/output_defects.hpp"
 #include "support/shapes.hpp"
@@ -327,6 +329,52 @@ TEST(CloseCornerTips, NoTriangleThatFoldsOrWithoutTwoLinksOrOnAnInnerEdge) {
   inner.vertices.push_back({1, 0.5, 1});
   inner.triangles.push_back({1, 0, 4});  // edge (0, 1) has two triangles already
   EXPECT_EQ(close_corner_tips(inner, {3}, {{0, 3}, {1, 3}}), 0u);
+}
+
+// The last step's removal of defects, as a pass over the whole mesh per round of removals: the
+// reference that make_manifold's local passes must match.
+std::vector<Triangle> removed_by_whole_passes(TriangleMesh& mesh, bool oriented, int& passes) {
+  std::vector<Triangle> removed;
+  const std::vector<bool> anywhere(mesh.vertices.size(), true);
+  for (passes = 0;; ++passes) {
+    OutputDefects d = find_output_defects(mesh, anywhere, oriented);
+    if (d.empty()) return removed;
+    std::sort(d.triangles.begin(), d.triangles.end());
+    const auto kept =
+        std::stable_partition(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) {
+          return !std::binary_search(d.triangles.begin(), d.triangles.end(), t);
+        });
+    removed.insert(removed.end(), kept, mesh.triangles.end());
+    mesh.triangles.erase(kept, mesh.triangles.end());
+  }
+}
+
+TEST(MakeManifold, RemovesWhatPassesOverTheWholeMeshRemoveAndLeavesAManifold) {
+  // A sphere with random extra triangles between nearby vertices: non-manifold edges and
+  // vertices, folds, and, once their triangles go, fans split further on, pass after pass.
+  const TriangleMesh sphere = icosphere(2);
+  std::mt19937_64 random(5);
+  int most_passes = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    TriangleMesh mesh = sphere;
+    std::uniform_int_distribution<std::size_t> pick(0, mesh.triangles.size() - 1);
+    for (int extra = 0; extra < 1 + trial % 12; ++extra) {
+      const Triangle a = mesh.triangles[pick(random)], b = mesh.triangles[pick(random)];
+      mesh.triangles.push_back({a[0], a[1], b[2]});
+      if (trial % 3 == 0) mesh.triangles.push_back({a[1], a[0], a[2]});  // a fold
+    }
+    for (const bool oriented : {true, false}) {
+      TriangleMesh reference = mesh, local = mesh;
+      int passes = 0;
+      const std::vector<Triangle> expected = removed_by_whole_passes(reference, oriented, passes);
+      most_passes = std::max(most_passes, passes);
+      EXPECT_EQ(make_manifold(local, oriented), expected) << "trial " << trial;
+      EXPECT_EQ(local.triangles, reference.triangles) << "trial " << trial;
+      const std::vector<bool> anywhere(local.vertices.size(), true);
+      EXPECT_TRUE(find_output_defects(local, anywhere, oriented).empty()) << "trial " << trial;
+    }
+  }
+  EXPECT_GE(most_passes, 3);  // the cases reach past the first pass
 }
 
 // The seeds of a remesh of `box` with features, and what each is bound to (read back from where
