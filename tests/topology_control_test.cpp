@@ -350,8 +350,10 @@ std::vector<Triangle> removed_by_whole_passes(TriangleMesh& mesh, bool oriented,
 }
 
 TEST(MakeManifold, RemovesWhatPassesOverTheWholeMeshRemoveAndLeavesAManifold) {
-  // A sphere with random extra triangles between nearby vertices: non-manifold edges and
-  // vertices, folds, and, once their triangles go, fans split further on, pass after pass.
+  // A sphere with random extra triangles, each on an edge of one triangle (the way that triangle
+  // uses it: a fold) and a corner of another, and in a third of the cases copies of triangles
+  // turned over: non-manifold edges and vertices, folds, and, once their triangles go, fans split
+  // further on, pass after pass.
   const TriangleMesh sphere = icosphere(2);
   std::mt19937_64 random(5);
   int most_passes = 0;
@@ -361,7 +363,7 @@ TEST(MakeManifold, RemovesWhatPassesOverTheWholeMeshRemoveAndLeavesAManifold) {
     for (int extra = 0; extra < 1 + trial % 12; ++extra) {
       const Triangle a = mesh.triangles[pick(random)], b = mesh.triangles[pick(random)];
       mesh.triangles.push_back({a[0], a[1], b[2]});
-      if (trial % 3 == 0) mesh.triangles.push_back({a[1], a[0], a[2]});  // a fold
+      if (trial % 3 == 0) mesh.triangles.push_back({a[1], a[0], a[2]});
     }
     for (const bool oriented : {true, false}) {
       TriangleMesh reference = mesh, local = mesh;
