@@ -31,32 +31,27 @@ std::vector<Triangle> make_manifold(TriangleMesh& mesh, bool oriented) {
   // Boundary edges are allowed here: only what makes the mesh non-manifold goes, and folds when
   // the input is oriented (a non-orientable one, a Möbius strip, has a fold wherever it closes).
   const std::vector<bool> may_bound(mesh.vertices.size(), true);
-  const auto flagged = [&](const std::vector<Triangle>& triangles, const ManifoldDefects& d) {
-    std::vector<Triangle> out;
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-      if (d.triangle[t]) out.push_back(triangles[t]);
-    return out;
-  };
-  ManifoldDefects d =
-      find_manifold_defects(mesh.vertices.size(), mesh.triangles, may_bound, oriented);
-  std::vector<Triangle> found = flagged(mesh.triangles, d);
   // Taking triangles away makes no edge non-manifold or folded; it can only split the fan of a
-  // vertex they had. So after the first pass, the next ones look at the triangles around the
-  // vertices of those just taken, for several fans there only (may_branch silences the others,
-  // whose fans these triangles show in part): the same triangles as a pass over the whole mesh,
-  // without sorting all its edges again (femur.off at 10k: 4 to 6 passes per last step, and a
-  // last step per round of topology control).
-  while (!found.empty()) {
-    const std::vector<bool> touched = remove_flagged(mesh, std::move(found), removed);
+  // vertex they had. So the first pass looks at the whole mesh, and each one after it at the
+  // triangles around the vertices of those just taken, for several fans there only (may_branch
+  // silences the others, whose fans these triangles show in part): the same triangles as a pass
+  // over the whole mesh, without sorting all its edges again (femur.off at 10k: 4 to 6 passes
+  // per last step, and a last step per round of topology control).
+  std::vector<bool> touched(mesh.vertices.size(), true);
+  for (;;) {
     std::vector<Triangle> around;
     for (const Triangle& t : mesh.triangles)
       if (touched[t[0]] || touched[t[1]] || touched[t[2]]) around.push_back(t);
     std::vector<bool> elsewhere(touched.size());
     for (std::size_t v = 0; v < touched.size(); ++v) elsewhere[v] = !touched[v];
-    d = find_manifold_defects(mesh.vertices.size(), around, may_bound, oriented, elsewhere);
-    found = flagged(around, d);
+    const ManifoldDefects d =
+        find_manifold_defects(mesh.vertices.size(), around, may_bound, oriented, elsewhere);
+    std::vector<Triangle> found;
+    for (std::size_t t = 0; t < around.size(); ++t)
+      if (d.triangle[t]) found.push_back(around[t]);
+    if (found.empty()) return removed;
+    touched = remove_flagged(mesh, std::move(found), removed);
   }
-  return removed;
 }
 
 }  // namespace cvtmesh

@@ -10,17 +10,22 @@
 
 namespace cvtmesh {
 
-// The largest squared distance from `seed` to the polygon, rounded up past every vertex's
-// error: the polygon is convex, so its farthest point from the seed is a vertex. One square root
-// per polygon, not per vertex (it ran after every cut of the RVD's clipping): the largest
-// distance plus the largest error bounds each vertex's distance plus its own.
-inline double squared_reach(const Vec3& seed, std::span<const RvdVertex> polygon) {
+// The largest distance from `point` to a vertex of the polygon plus the vertices' largest error:
+// every vertex's exact position lies within it. One square root per polygon, not per vertex (it
+// runs after every cut of the RVD's clipping).
+inline double reach_from(const Vec3& point, std::span<const RvdVertex> polygon) {
   double d2 = 0, error = 0;
   for (const RvdVertex& v : polygon) {
-    d2 = std::max(d2, dot(v.point - seed, v.point - seed));
+    d2 = std::max(d2, dot(v.point - point, v.point - point));
     error = std::max(error, v.error);
   }
-  const double r = std::sqrt(d2) + std::sqrt(3.0) * error;
+  return std::sqrt(d2) + std::sqrt(3.0) * error;
+}
+
+// The largest squared distance from `seed` to the polygon, rounded up past every vertex's
+// error: the polygon is convex, so its farthest point from the seed is a vertex.
+inline double squared_reach(const Vec3& seed, std::span<const RvdVertex> polygon) {
+  const double r = reach_from(seed, polygon);
   return r * r * (1 + 1e-10);
 }
 

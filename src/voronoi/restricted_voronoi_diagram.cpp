@@ -194,7 +194,7 @@ struct RestrictedVoronoiDiagram::Impl {
   }
 
   // A ball that contains the polygon: centred at its vertex average, radius rounded up past
-  // the vertices' errors (the largest distance plus the largest error, as in squared_reach).
+  // the vertices' errors.
   struct Ball {
     Vec3 center;
     double radius;
@@ -203,12 +203,7 @@ struct RestrictedVoronoiDiagram::Impl {
     Vec3 center{};
     for (const RvdVertex& v : polygon) center = center + v.point;
     center = (1.0 / static_cast<double>(polygon.size())) * center;
-    double d2 = 0, error = 0;
-    for (const RvdVertex& v : polygon) {
-      d2 = std::max(d2, dot(v.point - center, v.point - center));
-      error = std::max(error, v.error);
-    }
-    return {center, (std::sqrt(d2) + std::sqrt(3.0) * error) * (1 + 1e-10)};
+    return {center, reach_from(center, polygon) * (1 + 1e-10)};
   }
 
   // Whether the ball lies on x_i's side of bisector (i, j) with a margin far beyond rounding:
