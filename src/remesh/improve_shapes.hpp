@@ -44,8 +44,9 @@ struct ShapeImprovement {
 // missing ones are surface vertices) says where each may go: surface vertices go to their nearest
 // point on `surface`, curve vertices stay on their curve of `curves` (needed when any vertex is a
 // curve vertex), if one or two feature edges meet there. Vertices on boundary or non-manifold
-// edges, other than curve vertices on a boundary between their two feature edges, and tips and
-// saddles of the surface (angle defect over 30°; curve vertices excepted), never move.
+// edges, other than curve vertices on a boundary between their two feature edges, and tips of
+// the surface (angle defect over 30°; curve vertices excepted), never move; saddles (under -30°)
+// move only in a second pass, once the first, with them held too, has done what it can.
 // `feature_edges` (sorted) never flip, and of the others only those with exactly two triangles,
 // which use them in opposite directions. A collapse takes one surface vertex, or a curve vertex
 // along its curve (`feature_edges` then run from the vertex it merged into), out of the triangles,
