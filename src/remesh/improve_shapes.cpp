@@ -59,7 +59,7 @@ constexpr double kSliver = 0.1;
 // A saddle (a defect under -30°) uncovers no tip: it is held only until the rest has done what
 // it can, then a second pass lets it move. On the 57 shared meshes at 1k, 5k and 10k, θmin or
 // Qmin rose on 31 runs (scorpion_low_resolution at 5k 27.9° → 37.2°, two saddles beside a tip
-// holding a 28° triangle; man at 1k 20.4° → 32.5°, femur at 10k 17.5° → 29.9°) and fell by
+// holding a 28° triangle; man at 1k 20.4° → 32.5°, femur at 10k 17.5° → 27.4°) and fell by
 // 0.1° or 0.001 on 2; the Hausdorff max rose by 0.21% of the diagonal at most (couplingdown,
 // 1k). Saddles free from the start did as well on most but led triceratops at 1k to another
 // local optimum (35.0° → 19.0°: its horn's tip, held, left worse by its neighbours' moves).

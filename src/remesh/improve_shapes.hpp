@@ -40,19 +40,19 @@ struct ShapeImprovement {
 };
 
 // Improves the triangles of `mesh` with θmin under 40° or Q under 0.7 (a little above what a
-// converged CVT gives on a smooth surface), in `sweeps` sweeps at most. `support` (per vertex;
-// missing ones are surface vertices) says where each may go: surface vertices go to their nearest
-// point on `surface`, curve vertices stay on their curve of `curves` (needed when any vertex is a
-// curve vertex), if one or two feature edges meet there. Vertices on boundary or non-manifold
-// edges, other than curve vertices on a boundary between their two feature edges, and tips of
-// the surface (angle defect over 30°; curve vertices excepted), never move; saddles (under -30°)
-// move only in a second pass, once the first, with them held too, has done what it can.
-// `feature_edges` (sorted) never flip, and of the others only those with exactly two triangles,
-// which use them in opposite directions. A collapse takes one surface vertex, or a curve vertex
-// along its curve (`feature_edges` then run from the vertex it merged into), out of the triangles,
-// leaving it unused; at most one vertex in 100 goes so. Each change keeps the triangles it touches
-// about as close to the surface as they were. Sequential, in a fixed order: the result does not
-// depend on the thread count.
+// converged CVT gives on a smooth surface), in `sweeps` sweeps at most in each of two passes
+// (below). `support` (per vertex; missing ones are surface vertices) says where each may go:
+// surface vertices go to their nearest point on `surface`, curve vertices stay on their curve of
+// `curves` (needed when any vertex is a curve vertex), if one or two feature edges meet there.
+// Vertices on boundary or non-manifold edges, other than curve vertices on a boundary between their
+// two feature edges, and tips of the surface (angle defect over 30°; curve vertices excepted),
+// never move; saddles (under -30°) move only in a second pass, once the first, with them held too,
+// has done what it can. `feature_edges` (sorted) never flip, and of the others only those with
+// exactly two triangles, which use them in opposite directions. A collapse takes one surface
+// vertex, or a curve vertex along its curve (`feature_edges` then run from the vertex it merged
+// into), out of the triangles, leaving it unused; at most one vertex in 100 goes so. Each change
+// keeps the triangles it touches about as close to the surface as they were. Sequential, in a fixed
+// order: the result does not depend on the thread count.
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
                                 std::vector<Edge>& feature_edges, int sweeps);
