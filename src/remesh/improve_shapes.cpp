@@ -132,11 +132,14 @@ class ShapeImprover {
     // or before its triangles first change (on bunny.off at 5k, all of them were half the cost
     // of this step).
     start_gap_.assign(mesh_.vertices.size(), kNotMeasured);
-    // A saddle's gap is measured as a movable vertex's: it moves in the second pass.
+    // A held saddle's gap is measured as a movable vertex's: it moves in the second pass.
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
-      if (saddle(v)) saddles_.push_back(v);
-      if (!may_move(v)) support_[v].kind = VertexSupport::Kind::fixed;
-      if (support_[v].kind == VertexSupport::Kind::fixed && !saddle_at_start(v)) start_gap_[v] = 0;
+      if (may_move(v)) continue;
+      if (saddle(v))
+        saddles_.push_back(v);
+      else
+        start_gap_[v] = 0;
+      support_[v].kind = VertexSupport::Kind::fixed;
     }
   }
 
@@ -317,15 +320,12 @@ class ShapeImprover {
     return false;
   }
 
-  // A surface vertex inside the surface that only the saddle side of the tip rule holds.
+  // A surface vertex inside the surface that only the saddle side of the tip rule holds (asked
+  // of vertices that may not move).
   bool saddle(Index v) const {
     std::array<Index, 2> ends{};
     return support_[v].kind == VertexSupport::Kind::surface && star(v, ends) == Star::disc &&
            angle_defect(v) < -kTipDefectDeg;
-  }
-
-  bool saddle_at_start(Index v) const {
-    return std::binary_search(saddles_.begin(), saddles_.end(), v);
   }
 
   bool is_feature(Index a, Index b) const {
