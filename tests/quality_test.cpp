@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "cvtmesh/quality.hpp"
+#include "quality/min_shape.hpp"
 
 namespace cvtmesh {
 namespace {
@@ -82,6 +83,25 @@ TEST(TriangleShape, DegenerateTrianglesHaveZeroQuality) {
   EXPECT_EQ(repeated.quality, 0.0);
   EXPECT_EQ(repeated.min_angle, 0.0);
   EXPECT_EQ(repeated.max_angle, 180.0);
+}
+
+TEST(MinShape, IsExactlyTriangleShapesQualityAndSmallestAngle) {
+  // The output's last steps judge changes by min_shape and the report by triangle_shape: the
+  // two must agree to the bit, or a change judged better could report worse.
+  const std::array<std::array<Vec3, 3>, 6> triangles{{
+      {{{0, 0, 0}, {1, 0.2, 0}, {0.3, 0.9, 0.1}}},
+      {{{0, 0, 0}, {10, 0, 0}, {10.01, 0.02, 0}}},  // needle
+      {{{0, 0, 0}, {1, 0, 0}, {0.5, 1e-4, 0}}},     // cap
+      {{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}},          // collinear
+      {{{0, 0, 0}, {0, 0, 0}, {1, 0, 0}}},          // a repeated corner
+      {{{1, 2, 3}, {1.5, 2.1, 2.7}, {0.7, 2.9, 3.3}}},
+  }};
+  for (const auto& [a, b, c] : triangles) {
+    const TriangleShape full = triangle_shape(a, b, c);
+    const MinShape least = min_shape(a, b, c);
+    EXPECT_EQ(least.quality, full.quality);
+    EXPECT_EQ(least.min_angle, full.min_angle);
+  }
 }
 
 TEST(MeasureQuality, AggregatesOverTrianglesAndDistinctEdges) {

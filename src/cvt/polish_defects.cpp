@@ -4,8 +4,8 @@
 #include <functional>
 #include <iterator>
 
-#include "cvtmesh/quality.hpp"
 #include "geometry/point_tree.hpp"
+#include "quality/min_shape.hpp"
 #include "voronoi/multi_nerve.hpp"
 
 namespace cvtmesh {
@@ -48,8 +48,7 @@ class CellCoverage : public PolygonSink {
 
 // Whether the triangle has a defective shape.
 bool defective(const TriangleMesh& mesh, const Triangle& t) {
-  const TriangleShape shape =
-      triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
+  const MinShape shape = min_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
   return shape.min_angle < kMinAngleDeg || shape.quality < kMinQuality;
 }
 

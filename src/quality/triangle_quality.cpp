@@ -4,27 +4,55 @@
 #include <numbers>
 
 #include "cvtmesh/quality.hpp"
+#include "quality/min_shape.hpp"
 
 namespace cvtmesh {
 
-TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double la = distance(b, c), lb = distance(c, a), lc = distance(a, b);
-  if (la == 0 || lb == 0 || lc == 0) return {0, 0, 180};
+namespace {
+
+// What both shape functions measure: the edge lengths, twice the area and Q.
+struct Measured {
+  double la, lb, lc, twice_area, quality;
+};
+
+Measured measured(const Vec3& a, const Vec3& b, const Vec3& c) {
+  Measured m{distance(b, c), distance(c, a), distance(a, b), 0, 0};
+  if (m.la == 0 || m.lb == 0 || m.lc == 0) return m;
   // One cross product for the area and all three angles (its norm is twice the area at every
   // corner), and an angle only at the corners facing the shortest and the longest edge, where
   // the smallest and the largest angle are: shape improvement measures shapes by the million.
-  const double twice_area = norm(cross(b - a, c - a));
-  const double half_perimeter = 0.5 * (la + lb + lc);
-  const double longest = std::max({la, lb, lc});
+  m.twice_area = norm(cross(b - a, c - a));
+  const double half_perimeter = 0.5 * (m.la + m.lb + m.lc);
   // Paper §5: Q_t = 6/√3 · A/(p·h).
-  const double q = 3.0 / std::sqrt(3.0) * twice_area / (half_perimeter * longest);
+  m.quality = 3.0 / std::sqrt(3.0) * m.twice_area / (half_perimeter * std::max({m.la, m.lb, m.lc}));
+  return m;
+}
+
+// The angle in degrees at the corner facing the edge of length l, one of m's.
+double angle_facing(const Measured& m, double l, const Vec3& a, const Vec3& b, const Vec3& c) {
   const auto angle_at = [&](const Vec3& p, const Vec3& u, const Vec3& v) {
-    return 180 / std::numbers::pi * std::atan2(twice_area, dot(u - p, v - p));
+    return 180 / std::numbers::pi * std::atan2(m.twice_area, dot(u - p, v - p));
   };
-  const auto facing = [&](double l) {
-    return l == la ? angle_at(a, b, c) : l == lb ? angle_at(b, c, a) : angle_at(c, a, b);
-  };
-  return {q, facing(std::min({la, lb, lc})), facing(longest)};
+  return l == m.la ? angle_at(a, b, c) : l == m.lb ? angle_at(b, c, a) : angle_at(c, a, b);
+}
+
+bool has_zero_edge(const Measured& m) {
+  return m.la == 0 || m.lb == 0 || m.lc == 0;
+}
+
+}  // namespace
+
+TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Measured m = measured(a, b, c);
+  if (has_zero_edge(m)) return {0, 0, 180};
+  return {m.quality, angle_facing(m, std::min({m.la, m.lb, m.lc}), a, b, c),
+          angle_facing(m, std::max({m.la, m.lb, m.lc}), a, b, c)};
+}
+
+MinShape min_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Measured m = measured(a, b, c);
+  if (has_zero_edge(m)) return {0, 0};
+  return {m.quality, angle_facing(m, std::min({m.la, m.lb, m.lc}), a, b, c)};
 }
 
 QualityReport measure_quality(const TriangleMesh& given) {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <limits>
 
-#include "cvtmesh/quality.hpp"
 #include "features/edge_uses.hpp"
 #include "geometry/surface_projector.hpp"
+#include "quality/min_shape.hpp"
 
 namespace cvtmesh {
 
@@ -118,7 +118,7 @@ std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
 bool acceptable(const TriangleMesh& mesh, std::size_t t, const Vec3& before, double angle_floor,
                 double q_floor) {
   const auto [a, b, c] = mesh.corners(t);
-  const TriangleShape s = triangle_shape(a, b, c);
+  const MinShape s = min_shape(a, b, c);
   return s.min_angle >= angle_floor && s.quality >= q_floor &&
          dot(unit(cross(b - a, c - a)), before) >= kMinTurnCos;
 }
@@ -136,7 +136,7 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
   double angle_floor = 180, q_floor = 1;
   for (std::size_t t = 0; t < nt; ++t) {
     const auto [a, b, c] = mesh.corners(t);
-    const TriangleShape s = triangle_shape(a, b, c);
+    const MinShape s = min_shape(a, b, c);
     angle_floor = std::min(angle_floor, s.min_angle);
     q_floor = std::min(q_floor, s.quality);
   }

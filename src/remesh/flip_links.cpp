@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "cvtmesh/quality.hpp"
 #include "geometry/triangles_around.hpp"
+#include "quality/min_shape.hpp"
 
 namespace cvtmesh {
 
@@ -15,7 +15,7 @@ Vec3 normal(const TriangleMesh& m, const Triangle& t) {
 }
 
 double smallest_angle(const TriangleMesh& m, const Triangle& t) {
-  return triangle_shape(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]).min_angle;
+  return min_shape(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]).min_angle;
 }
 
 // The triangles at each vertex, kept up to date through the flips.

@@ -11,13 +11,13 @@
 #include <optional>
 #include <span>
 
-#include "cvtmesh/quality.hpp"
 #include "features/curve_projector.hpp"
 #include "features/edge_uses.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/triangles_around.hpp"
 #include "geometry/unit_vector.hpp"
+#include "quality/min_shape.hpp"
 #include "remesh/surface_gap.hpp"
 #include "remesh/worst_shape.hpp"
 
@@ -85,7 +85,7 @@ constexpr std::size_t kCollapsesPer = 100;
 constexpr double kNotMeasured = -1;
 
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const TriangleShape s = triangle_shape(a, b, c);
+  const MinShape s = min_shape(a, b, c);
   return s.min_angle < kMinAngleDeg || s.quality < kMinQuality;
 }
 
@@ -429,7 +429,7 @@ class ShapeImprover {
     for (int k = 0; k < 4; ++k) {
       const auto [u, v, w] = planar[k];
       const Vec3 m = unit_normal(p[u], p[v], p[w]);
-      if (k < 2 && triangle_shape(p[u], p[v], p[w]).quality < kSliver) continue;
+      if (k < 2 && min_shape(p[u], p[v], p[w]).quality < kSliver) continue;
       if (no_direction(m) || no_direction(n) || dot(m, n) < kFlatCos) return false;
     }
     return gap_at(0.5 * (p[c] + p[d])) <=

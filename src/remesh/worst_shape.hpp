@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "cvtmesh/quality.hpp"
+#include "quality/min_shape.hpp"
 
 namespace cvtmesh {
 
@@ -14,7 +14,7 @@ struct WorstShape {
   double angle = 1;
 
   void add(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const TriangleShape s = triangle_shape(a, b, c);
+    const MinShape s = min_shape(a, b, c);
     quality = std::min(quality, s.quality);
     angle = std::min(angle, s.min_angle / 60);
   }
