@@ -1,7 +1,7 @@
 #include "voronoi/piece_euler.hpp"
 
 #include <algorithm>
-#include <tuple>
+#include <numeric>
 
 namespace cvtmesh {
 
@@ -68,12 +68,27 @@ std::vector<PieceShape> PieceEulerCollector::shapes(const CellPieceCollector& pi
         out[i].farthest = o.farthest;
       }
     }
-  std::vector<std::tuple<std::size_t, std::array<std::int64_t, 3>>> keys;
+  // Each piece's shared keys, counted once: scattered into piece order (a counting sort), then
+  // each piece's few sorted (sorting them all together was a twentieth of femur.off at 1k).
+  std::vector<std::size_t> piece_of_key, offsets(out.size() + 1, 0);
   for (const auto& chunk : shared_)
-    for (const Shared& s : chunk) keys.emplace_back(pieces.piece_at(s.seed, s.triangle), s.key);
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  for (const auto& [piece, key] : keys) out[piece].euler += key[0] == kEdge ? -1 : 1;
+    for (const Shared& s : chunk) {
+      piece_of_key.push_back(pieces.piece_at(s.seed, s.triangle));
+      ++offsets[piece_of_key.back() + 1];
+    }
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::size_t> next(offsets.begin(), offsets.end() - 1);
+  std::vector<std::array<std::int64_t, 3>> keys(piece_of_key.size());
+  std::size_t k = 0;
+  for (const auto& chunk : shared_)
+    for (const Shared& s : chunk) keys[next[piece_of_key[k++]]++] = s.key;
+  for (std::size_t piece = 0; piece < out.size(); ++piece) {
+    const auto begin = keys.begin() + static_cast<std::ptrdiff_t>(offsets[piece]);
+    const auto end = keys.begin() + static_cast<std::ptrdiff_t>(offsets[piece + 1]);
+    std::sort(begin, end);
+    for (auto key = begin; key != end; ++key)
+      if (key == begin || *key != key[-1]) out[piece].euler += (*key)[0] == kEdge ? -1 : 1;
+  }
   return out;
 }
 
