@@ -281,6 +281,35 @@ TEST(Features, CreasesAcrossAStripTooNarrowForTheScaleAreNone) {
   EXPECT_EQ(step_edges(step, detect_features(step, s)), 60u);
 }
 
+// A sheet folded by 90° along a crease 2 long on the x axis, each face 0.5 wide, its rims open;
+// `shear` slants the face at y > 0 back along the crease, so that at the crease's end x = 2 the
+// rim leaves it at atan(1 / shear).
+TriangleMesh folded_sheet(double shear) {
+  return testing::mapped_grid(16, 8, [shear](double u, double v) {
+    if (v <= 0.5) return Vec3{2 * u - shear * (0.5 - v), 0.5 - v, 0};
+    return Vec3{2 * u, 0, v - 0.5};
+  });
+}
+
+std::size_t crease_edges(const TriangleMesh& m, const Features& f) {
+  return static_cast<std::size_t>(std::ranges::count_if(f.edges, [&](const Edge& e) {
+    const Vec3 &a = m.vertices[e[0]], &b = m.vertices[e[1]];
+    return a.y == 0 && a.z == 0 && b.y == 0 && b.z == 0;
+  }));
+}
+
+TEST(Features, ACreaseMeetingABoundaryAtANarrowAngleIsNoCreaseUnlessForced) {
+  FeatureSettings s;
+  s.scale = 0.2;
+  // Square rims: the crease meets them at 90° and is kept, its 16 edges.
+  EXPECT_EQ(crease_edges(folded_sheet(0), detect_features(folded_sheet(0), s)), 16u);
+  // Slanted by 4: at x = 2 the rim leaves the crease at 14°, a wedge no triangle can fill well.
+  const TriangleMesh slanted = folded_sheet(4);
+  EXPECT_EQ(crease_edges(slanted, detect_features(slanted, s)), 0u);
+  s.creases_at_scale = false;  // a feature angle given: kept
+  EXPECT_EQ(crease_edges(slanted, detect_features(slanted, s)), 16u);
+}
+
 TEST(Features, TwinCurvesGoForTheShorterOrTheOneThatMustStay) {
   TriangleMesh m;
   m.vertices = {{0, 0, 0}, {1, 0.1, 0}, {2, 0, 0}, {1, -0.4, 0}};

@@ -8,9 +8,11 @@
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
+#include "cvtmesh/quality.hpp"
 #include "features/crease_at_scale.hpp"
 #include "features/edge_uses.hpp"
 #include "features/twin_curves.hpp"
+#include "geometry/angle.hpp"
 #include "geometry/union_find.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -188,6 +190,23 @@ bool free_at_both_ends(const Adjacency& adj, const FeatureCurve& c) {
   return !c.closed && adj.degree(c.vertices.front()) == 1 && adj.degree(c.vertices.back()) == 1;
 }
 
+// Whether curve c leaves an end along a boundary edge at under kNarrowAngleDeg: the wedge between
+// them holds no triangle better than that angle, and without the crease the boundary alone is
+// kept (a scan's lip fading into a jagged hole rim, lion.off at 5k: 8.6°).
+bool narrow_at_boundary(const TriangleMesh& mesh, const Adjacency& boundary,
+                        const FeatureCurve& c) {
+  if (c.closed || c.vertices.size() < 2) return false;
+  const auto narrow = [&](Index end, Index next) {
+    const Vec3 along = mesh.vertices[next] - mesh.vertices[end];
+    for (std::size_t k = boundary.start[end]; k < boundary.start[end + 1]; ++k)
+      if (angle_deg(along, mesh.vertices[boundary.other[k]] - mesh.vertices[end]) < kNarrowAngleDeg)
+        return true;
+    return false;
+  };
+  const std::vector<Index>& v = c.vertices;
+  return narrow(v.front(), v[1]) || narrow(v.back(), v[v.size() - 2]);
+}
+
 std::vector<Edge> edges_of(const FeatureCurve& c) {
   std::vector<Edge> edges;
   for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
@@ -240,6 +259,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
   const double cos_threshold = std::cos(settings.angle_deg * std::numbers::pi / 180);
   Features f;
   std::vector<Edge> sharp_edges;  // kept for being sharp, and for nothing else
+  std::vector<Edge> boundary_edges;
   const std::vector<EdgeUse> uses = edge_uses(mesh);
   for (std::size_t k = 0; k < uses.size();) {
     std::size_t end = k;
@@ -247,6 +267,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     const std::size_t count = end - k;
     if (count != 2) {
       f.edges.push_back(uses[k].edge);
+      if (count == 1) boundary_edges.push_back(uses[k].edge);
     } else if (settings.sharp_edges && sharp(mesh, uses[k].edge, uses[k].triangle(),
                                              uses[k + 1].triangle(), cos_threshold)) {
       f.edges.push_back(uses[k].edge);
@@ -340,9 +361,12 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       const CreaseScale::Votes& v = smooth[networks.find(f.curves[c].vertices[0])];
       return 2 * v.smooth < v.measured;
     };
+    const Adjacency boundary = adjacency(mesh.vertices.size(), boundary_edges);
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
-      if (droppable[c] && (twin[c] || rough_around(c) || !feature_at_scale(c)))
+      if (droppable[c] &&
+          (twin[c] || rough_around(c) || !feature_at_scale(c) ||
+           (settings.creases_at_scale && narrow_at_boundary(mesh, boundary, f.curves[c]))))
         dropped.insert(dropped.end(), curve_edges[c].begin(), curve_edges[c].end());
     if (!dropped.empty()) {
       drop_edges(std::move(dropped), f);
