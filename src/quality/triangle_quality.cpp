@@ -10,17 +10,19 @@ namespace cvtmesh {
 
 namespace {
 
-// What both shape functions measure: the edge lengths, twice the area and Q.
+// What both shape functions measure: the edge lengths, twice the area and Q. One cross product
+// for the area and all the angles (its norm is twice the area at every corner).
 struct Measured {
   double la, lb, lc, twice_area, quality;
 };
 
+bool has_zero_edge(const Measured& m) {
+  return m.la == 0 || m.lb == 0 || m.lc == 0;
+}
+
 Measured measured(const Vec3& a, const Vec3& b, const Vec3& c) {
   Measured m{distance(b, c), distance(c, a), distance(a, b), 0, 0};
-  if (m.la == 0 || m.lb == 0 || m.lc == 0) return m;
-  // One cross product for the area and all three angles (its norm is twice the area at every
-  // corner), and an angle only at the corners facing the shortest and the longest edge, where
-  // the smallest and the largest angle are: shape improvement measures shapes by the million.
+  if (has_zero_edge(m)) return m;
   m.twice_area = norm(cross(b - a, c - a));
   const double half_perimeter = 0.5 * (m.la + m.lb + m.lc);
   // Paper §5: Q_t = 6/√3 · A/(p·h).
@@ -28,16 +30,14 @@ Measured measured(const Vec3& a, const Vec3& b, const Vec3& c) {
   return m;
 }
 
-// The angle in degrees at the corner facing the edge of length l, one of m's.
+// The angle in degrees at the corner facing the edge of length l, one of m's. Measured only at
+// the corners facing the shortest and the longest edge, where the smallest and the largest
+// angle are: shape improvement measures shapes by the million.
 double angle_facing(const Measured& m, double l, const Vec3& a, const Vec3& b, const Vec3& c) {
   const auto angle_at = [&](const Vec3& p, const Vec3& u, const Vec3& v) {
     return 180 / std::numbers::pi * std::atan2(m.twice_area, dot(u - p, v - p));
   };
   return l == m.la ? angle_at(a, b, c) : l == m.lb ? angle_at(b, c, a) : angle_at(c, a, b);
-}
-
-bool has_zero_edge(const Measured& m) {
-  return m.la == 0 || m.lb == 0 || m.lc == 0;
 }
 
 }  // namespace
