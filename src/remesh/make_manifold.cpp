@@ -42,8 +42,8 @@ std::vector<Triangle> make_manifold(TriangleMesh& mesh, bool oriented) {
     std::vector<Triangle> around;
     for (const Triangle& t : mesh.triangles)
       if (touched[t[0]] || touched[t[1]] || touched[t[2]]) around.push_back(t);
-    std::vector<bool> elsewhere(touched.size());
-    for (std::size_t v = 0; v < touched.size(); ++v) elsewhere[v] = !touched[v];
+    std::vector<bool> elsewhere = touched;
+    elsewhere.flip();
     const ManifoldDefects d =
         find_manifold_defects(mesh.vertices.size(), around, may_bound, oriented, elsewhere);
     std::vector<Triangle> found;
