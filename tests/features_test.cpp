@@ -15,7 +15,9 @@
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/edge_uses.hpp"
+#include "features/feature_sectors.hpp"
 #include "features/twin_curves.hpp"
+#include "geometry/angle.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
 #include "support/temp_dir.hpp"
@@ -120,6 +122,35 @@ TEST(Features, NarrowestSectorIsTheAngleBetweenTwoFeaturesAtAVertex) {
   // No vertex with two features: 360.
   const TriangleMesh ball = testing::icosphere(2);
   EXPECT_EQ(narrowest_feature_sector_deg(ball, detect_features(ball, {})), 360);
+}
+
+TEST(Features, ASectorIsSummedRoundTheSurfaceNotTheAngleBetweenItsEdges) {
+  // A fan on a cone of half-angle 30° round the z axis, from (1/2, 0, ..) half way round to
+  // (-1/2, 0, ..): its two rim edges are 60° apart in space, but the surface between them spans
+  // about pi sin 30° = 90° (eight 22.5° steps of azimuth, each triangle's angle about 11.2°).
+  TriangleMesh fan;
+  fan.vertices.push_back({0, 0, 0});
+  for (int k = 0; k <= 8; ++k) {
+    const double phi = k * std::numbers::pi / 8;
+    fan.vertices.push_back({0.5 * std::cos(phi), 0.5 * std::sin(phi), std::sqrt(0.75)});
+  }
+  for (Index k = 1; k <= 8; ++k) fan.triangles.push_back({0, k, k + 1});
+  Features f;
+  f.edges = {{0, 1}, {0, 9}};
+  const std::vector<FeatureSector> sectors = feature_sectors(fan, f);
+  ASSERT_EQ(sectors.size(), 2u);  // one each way round
+  double flat = 0;
+  for (Index k = 1; k <= 8; ++k) flat += angle_deg(fan.vertices[k], fan.vertices[k + 1]);
+  for (const FeatureSector& s : sectors) {
+    EXPECT_EQ(s.apex, 0u);
+    EXPECT_EQ(std::min(s.from, s.to), 1u);
+    EXPECT_EQ(std::max(s.from, s.to), 9u);
+    EXPECT_NEAR(s.angle_deg, flat, 1e-9);
+  }
+  EXPECT_GT(sectors[0].angle_deg, 85);
+  EXPECT_NEAR(angle_deg(fan.vertices[1], fan.vertices[9]), 60, 1e-9);
+  // The rim's own ends have one feature edge each: no sector there.
+  EXPECT_NEAR(narrowest_feature_sector_deg(fan, f), flat, 1e-9);
 }
 
 TEST(Features, UserEdgesAreKeptAndChecked) {

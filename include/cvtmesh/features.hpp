@@ -29,8 +29,9 @@ struct FeatureSettings {
   // the folds of a low-poly organic model, flat-sided at a finer scale), or when free at both
   // ends (meeting no other feature) and shorter than 8 times it or than a third of the square
   // root of its component's area (a fold of an organic model's polygons; CAD creases end where
-  // they meet other creases), or when one of its ends leaves along a boundary edge at under
-  // 30°, kNarrowAngleDeg (a wedge no triangle fills well; the boundary stays), or when another
+  // they meet other creases), or when one of its ends leaves along a boundary edge with a sector
+  // of the surface under 30° between them, kNarrowAngleDeg (a wedge no triangle fills well; the
+  // boundary stays), or when another
   // curve joins the same two corners within half of it all along (twins: one is kept, the
   // shorter). With `creases_at_scale`, a sharp turn is a corner only where both its curves are
   // at least 0.3 times it long (the jagged rim of a scan's hole), or where all the curves it is

@@ -196,9 +196,9 @@ scale : float, default 0
     are no features at that scale (shorter than twice it, jagged folds between sides that
     are not flat within it, folds amid an input that bends at its own resolution, creases
     free at both ends shorter than 8 times it or than a third of their component across,
-    creases that leave an end along a boundary edge at under 30 degrees, or the longer of two
-    curves joining the same corners within half of it), as remesh does by
-    default. 0 keeps every curve.
+    creases that leave an end along a boundary edge with under 30 degrees of surface
+    between them, or the longer of two curves joining the same corners within half of
+    it), as remesh does by default. 0 keeps every curve.
 feature_edges : (k, 2) int array, optional
     More feature edges, as vertex-id pairs; each must be an edge of the mesh.
 

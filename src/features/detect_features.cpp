@@ -11,8 +11,8 @@
 #include "cvtmesh/quality.hpp"
 #include "features/crease_at_scale.hpp"
 #include "features/edge_uses.hpp"
+#include "features/feature_sectors.hpp"
 #include "features/twin_curves.hpp"
-#include "geometry/angle.hpp"
 #include "geometry/union_find.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -190,17 +190,23 @@ bool free_at_both_ends(const Adjacency& adj, const FeatureCurve& c) {
   return !c.closed && adj.degree(c.vertices.front()) == 1 && adj.degree(c.vertices.back()) == 1;
 }
 
-// Whether curve c leaves an end along a boundary edge at under kNarrowAngleDeg: the wedge between
-// them holds no triangle better than that angle, and without the crease the boundary alone is
-// kept (a scan's lip fading into a jagged hole rim, lion.off at 5k: 8.6°).
-bool narrow_at_boundary(const TriangleMesh& mesh, const Adjacency& boundary,
+// Whether curve c leaves an end along a boundary edge with a sector of the surface under
+// kNarrowAngleDeg between them: the wedge holds no triangle better than that angle, and without
+// the crease the boundary alone is kept (a scan's lip fading into a jagged hole rim, lion.off at
+// 5k: 8.6°). `sectors` are the feature sectors, sorted by apex.
+bool narrow_at_boundary(const std::vector<FeatureSector>& sectors, const Adjacency& boundary,
                         const FeatureCurve& c) {
   if (c.closed || c.vertices.size() < 2) return false;
+  const auto on_boundary = [&](Index v, Index w) {
+    for (std::size_t k = boundary.start[v]; k < boundary.start[v + 1]; ++k)
+      if (boundary.other[k] == w) return true;
+    return false;
+  };
   const auto narrow = [&](Index end, Index next) {
-    const Vec3 along = mesh.vertices[next] - mesh.vertices[end];
-    for (std::size_t k = boundary.start[end]; k < boundary.start[end + 1]; ++k)
-      if (angle_deg(along, mesh.vertices[boundary.other[k]] - mesh.vertices[end]) < kNarrowAngleDeg)
-        return true;
+    auto s = std::lower_bound(sectors.begin(), sectors.end(), end,
+                              [](const FeatureSector& x, Index v) { return x.apex < v; });
+    for (; s != sectors.end() && s->apex == end; ++s)
+      if (s->from == next && s->angle_deg < kNarrowAngleDeg && on_boundary(end, s->to)) return true;
     return false;
   };
   const std::vector<Index>& v = c.vertices;
@@ -362,11 +368,13 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       return 2 * v.smooth < v.measured;
     };
     const Adjacency boundary = adjacency(mesh.vertices.size(), boundary_edges);
+    const std::vector<FeatureSector> sectors =
+        settings.creases_at_scale ? feature_sectors(mesh, f) : std::vector<FeatureSector>{};
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
       if (droppable[c] &&
           (twin[c] || rough_around(c) || !feature_at_scale(c) ||
-           (settings.creases_at_scale && narrow_at_boundary(mesh, boundary, f.curves[c]))))
+           (settings.creases_at_scale && narrow_at_boundary(sectors, boundary, f.curves[c]))))
         dropped.insert(dropped.end(), curve_edges[c].begin(), curve_edges[c].end());
     if (!dropped.empty()) {
       drop_edges(std::move(dropped), f);

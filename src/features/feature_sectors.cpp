@@ -1,9 +1,11 @@
 // The narrowest sector of the surface between two feature edges at a vertex: a bound on the
 // smallest angle of any output that traces both (paper §5's θmin, on CAD parts).
 #include <algorithm>
+#include <optional>
 #include <span>
 
 #include "cvtmesh/features.hpp"
+#include "features/feature_sectors.hpp"
 #include "geometry/angle.hpp"
 
 namespace cvtmesh {
@@ -21,29 +23,41 @@ bool is_feature(const Features& f, Index a, Index b) {
 }
 
 // A vertex's fan walked from feature neighbour `start` through the triangle `from`, summing
-// angles until the next feature neighbour. Negative when the walk ends without one (an open
-// fan), comes back to `start`, or goes round a non-manifold fan's cycle.
-double sector_from(const Features& f, std::span<const FanEntry> fan, const FanEntry* from,
-                   Index start) {
+// angles until the next feature neighbour. None when the walk ends without one (an open fan),
+// comes back to `start`, or goes round a non-manifold fan's cycle.
+std::optional<FeatureSector> sector_from(const Features& f, std::span<const FanEntry> fan,
+                                         const FanEntry* from, Index start) {
   double sum = 0;
   Index at = start;
   const FanEntry* e = from;
   for (std::size_t steps = fan.size(); e != nullptr && steps > 0; --steps) {
     sum += e->angle_deg;
     at = e->x == at ? e->y : e->x;
-    if (at == start) return -1;
-    if (is_feature(f, e->apex, at)) return sum;
+    if (at == start) return std::nullopt;
+    if (is_feature(f, e->apex, at)) return FeatureSector{e->apex, start, at, sum};
     const FanEntry* next = nullptr;
     for (const FanEntry& g : fan)
       if (&g != e && (g.x == at || g.y == at)) next = &g;
     e = next;
   }
-  return -1;
+  return std::nullopt;
 }
 
 // Per vertex with two feature edges or more, the narrowest sector between two of them, by vertex.
 std::vector<std::pair<Index, double>> narrowest_sectors(const TriangleMesh& mesh,
                                                         const Features& features) {
+  std::vector<std::pair<Index, double>> out;
+  for (const FeatureSector& s : feature_sectors(mesh, features))
+    if (out.empty() || out.back().first != s.apex)
+      out.push_back({s.apex, s.angle_deg});
+    else
+      out.back().second = std::min(out.back().second, s.angle_deg);
+  return out;
+}
+
+}  // namespace
+
+std::vector<FeatureSector> feature_sectors(const TriangleMesh& mesh, const Features& features) {
   std::vector<int> degree(mesh.vertices.size(), 0);
   for (const Edge& e : features.edges) ++degree[e[0]], ++degree[e[1]];
   std::vector<FanEntry> fans;
@@ -56,9 +70,8 @@ std::vector<std::pair<Index, double>> narrowest_sectors(const TriangleMesh& mesh
     }
   std::sort(fans.begin(), fans.end(),
             [](const FanEntry& a, const FanEntry& b) { return a.apex < b.apex; });
-  std::vector<std::pair<Index, double>> out;
+  std::vector<FeatureSector> out;
   for (auto first = fans.begin(); first != fans.end();) {
-    double narrowest = 360;
     const auto last =
         std::find_if(first, fans.end(), [&](const FanEntry& e) { return e.apex != first->apex; });
     // Each triangle at a feature edge starts a walk (both ways round, from each end); in a
@@ -66,17 +79,12 @@ std::vector<std::pair<Index, double>> narrowest_sectors(const TriangleMesh& mesh
     const std::span<const FanEntry> fan(first, last);
     for (const FanEntry& e : fan)
       for (const Index start : {e.x, e.y})
-        if (is_feature(features, e.apex, start)) {
-          const double s = sector_from(features, fan, &e, start);
-          if (s >= 0) narrowest = std::min(narrowest, s);
-        }
-    if (narrowest < 360) out.push_back({first->apex, narrowest});
+        if (is_feature(features, e.apex, start))
+          if (const auto s = sector_from(features, fan, &e, start)) out.push_back(*s);
     first = last;
   }
   return out;
 }
-
-}  // namespace
 
 double narrowest_feature_sector_deg(const TriangleMesh& mesh, const Features& features) {
   double narrowest = 360;
