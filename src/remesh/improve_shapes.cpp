@@ -134,8 +134,9 @@ class ShapeImprover {
     start_gap_.assign(mesh_.vertices.size(), kNotMeasured);
     // A held saddle's gap is measured as a movable vertex's: it moves in the second pass.
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
-      if (may_move(v)) continue;
-      if (saddle(v))
+      const Hold why = hold(v);
+      if (why == Hold::none) continue;
+      if (why == Hold::saddle)
         saddles_.push_back(v);
       else
         start_gap_[v] = 0;
@@ -292,16 +293,22 @@ class ShapeImprover {
     return Star::half_disc;
   }
 
-  // Whether `v` may move at all: a surface vertex inside the surface that is no tip (moved, a
-  // tip would be uncovered), or a curve vertex with one or two feature edges inside the surface,
-  // or between its two on a boundary.
-  bool may_move(Index v) const {
+  // Why `v` may not move at all, if it may not. It may if it is a surface vertex inside the
+  // surface that is no tip (moved, a tip would be uncovered), or a curve vertex with one or two
+  // feature edges inside the surface, or between its two on a boundary. A surface vertex inside
+  // the surface that only the saddle side of the tip rule holds is told apart.
+  enum class Hold { none, saddle, fixed };
+  Hold hold(Index v) const {
     std::array<Index, 2> ends{};
     switch (support_[v].kind) {
       case VertexSupport::Kind::fixed:
-        return false;
-      case VertexSupport::Kind::surface:
-        return star(v, ends) == Star::disc && std::abs(angle_defect(v)) <= kTipDefectDeg;
+        return Hold::fixed;
+      case VertexSupport::Kind::surface: {
+        if (star(v, ends) != Star::disc) return Hold::fixed;
+        const double defect = angle_defect(v);
+        if (std::abs(defect) <= kTipDefectDeg) return Hold::none;
+        return defect < -kTipDefectDeg ? Hold::saddle : Hold::fixed;
+      }
       case VertexSupport::Kind::curve: {
         std::vector<Index> along;  // its neighbours across feature edges
         for (Index t : around_[v])
@@ -311,21 +318,15 @@ class ShapeImprover {
         along.erase(std::unique(along.begin(), along.end()), along.end());
         // One feature edge when the link to its other neighbour along the curve was not traced:
         // it may still slide, and the edge it has stays a chord of the curve.
-        if (along.empty() || along.size() > 2 || curves_ == nullptr) return false;
+        if (along.empty() || along.size() > 2 || curves_ == nullptr) return Hold::fixed;
         const Star kind = star(v, ends);
         std::sort(ends.begin(), ends.end());
-        return kind == Star::disc || (kind == Star::half_disc && std::ranges::equal(ends, along));
+        return kind == Star::disc || (kind == Star::half_disc && std::ranges::equal(ends, along))
+                   ? Hold::none
+                   : Hold::fixed;
       }
     }
-    return false;
-  }
-
-  // A surface vertex inside the surface that only the saddle side of the tip rule holds (asked
-  // of vertices that may not move).
-  bool saddle(Index v) const {
-    std::array<Index, 2> ends{};
-    return support_[v].kind == VertexSupport::Kind::surface && star(v, ends) == Star::disc &&
-           angle_defect(v) < -kTipDefectDeg;
+    return Hold::fixed;
   }
 
   bool is_feature(Index a, Index b) const {
