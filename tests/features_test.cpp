@@ -139,18 +139,18 @@ TEST(Features, ASectorIsSummedRoundTheSurfaceNotTheAngleBetweenItsEdges) {
   f.edges = {{0, 1}, {0, 9}};
   const std::vector<FeatureSector> sectors = feature_sectors(fan, f);
   ASSERT_EQ(sectors.size(), 2u);  // one each way round
-  double flat = 0;
-  for (Index k = 1; k <= 8; ++k) flat += angle_deg(fan.vertices[k], fan.vertices[k + 1]);
+  double summed = 0;              // the fan's angles at its apex
+  for (Index k = 1; k <= 8; ++k) summed += angle_deg(fan.vertices[k], fan.vertices[k + 1]);
   for (const FeatureSector& s : sectors) {
     EXPECT_EQ(s.apex, 0u);
     EXPECT_EQ(std::min(s.from, s.to), 1u);
     EXPECT_EQ(std::max(s.from, s.to), 9u);
-    EXPECT_NEAR(s.angle_deg, flat, 1e-9);
+    EXPECT_NEAR(s.angle_deg, summed, 1e-9);
   }
   EXPECT_GT(sectors[0].angle_deg, 85);
   EXPECT_NEAR(angle_deg(fan.vertices[1], fan.vertices[9]), 60, 1e-9);
   // The rim's own ends have one feature edge each: no sector there.
-  EXPECT_NEAR(narrowest_feature_sector_deg(fan, f), flat, 1e-9);
+  EXPECT_NEAR(narrowest_feature_sector_deg(fan, f), summed, 1e-9);
 }
 
 TEST(Features, UserEdgesAreKeptAndChecked) {

@@ -31,12 +31,11 @@ struct FeatureSettings {
   // root of its component's area (a fold of an organic model's polygons; CAD creases end where
   // they meet other creases), or when one of its ends leaves along a boundary edge with a sector
   // of the surface under 30° between them, kNarrowAngleDeg (a wedge no triangle fills well; the
-  // boundary stays), or when another
-  // curve joins the same two corners within half of it all along (twins: one is kept, the
-  // shorter). With `creases_at_scale`, a sharp turn is a corner only where both its curves are
-  // at least 0.3 times it long (the jagged rim of a scan's hole), or where all the curves it is
-  // connected to are together shorter than twice it (a small part's or hole's outline). remesh
-  // sets it to its target edge length.
+  // boundary stays), or when another curve joins the same two corners within half of it all
+  // along (twins: one is kept, the shorter). With `creases_at_scale`, a sharp turn is a corner
+  // only where both its curves are at least 0.3 times it long (the jagged rim of a scan's hole),
+  // or where all the curves it is connected to are together shorter than twice it (a small
+  // part's or hole's outline). remesh sets it to its target edge length.
   double scale = 0;
   bool creases_at_scale = true;  // all but the length rule; off when --feature-angle is given
   // More feature edges, chosen by the user: each must be an edge of the mesh.
