@@ -368,8 +368,10 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       return 2 * v.smooth < v.measured;
     };
     const Adjacency boundary = adjacency(mesh.vertices.size(), boundary_edges);
-    const std::vector<FeatureSector> sectors =
-        settings.creases_at_scale ? feature_sectors(mesh, f) : std::vector<FeatureSector>{};
+    // Only a surface with a boundary has a crease to drop for meeting it narrowly.
+    const std::vector<FeatureSector> sectors = settings.creases_at_scale && !boundary_edges.empty()
+                                                   ? feature_sectors(mesh, f)
+                                                   : std::vector<FeatureSector>{};
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
       if (droppable[c] &&
