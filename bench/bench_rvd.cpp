@@ -2,16 +2,16 @@
 // Delaunay triangulation of the same seeds (the paper's baseline), measured in the same
 // process so the ratio survives a noisy machine. The RVD time is all of it: kd-tree, nearest-
 // seed lists, and one traversal with integrals.
-//   BM_RvdVsDelaunay/N: icosphere level 4 (5,120 faces), N random seeds; counters delaunay_s,
-//     rvd_s and rvd_over_delaunay.
+//   BM_RvdVsDelaunay/N/T: icosphere level 4 (5,120 faces), N random seeds, the RVD on T threads
+//     (the Delaunay triangulation is serial); counters delaunay_s, rvd_s and rvd_over_delaunay.
 //   BM_RvdLargeMesh/T: ../shared/data/igea.ply (268,686 faces), 10k seeds, T threads; counter
 //     rvd_s, and exact_fallback_pct of the predicates.
 //   BM_RvdShuffledInput: igea's vertices and triangles shuffled, 10k seeds, 1 thread: an RVD pass
 //     on the file's order (stored_s), on the shuffled copy (shuffled_s), and on the shuffled copy
 //     sorted by spatially_sorted, the sort included (sorted_s); sorted_over_stored is the
 //     order-independence figure (issue 19: at most 1.15).
-//   BM_RvdCoarseInput/N: a cube of 12 triangles, N random seeds, each triangle thousands of cells
-//     wide (issue 19: coarse inputs cost what their cells cost); rvd_over_delaunay as above.
+//   BM_RvdCoarseInput/N/T: a cube of 12 triangles, N random seeds, each triangle thousands of
+//     cells wide (issue 19: coarse inputs cost what their cells cost); as above.
 //   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
 //     compares to random seeds on the same mesh (exact_fallback_pct, ties).
 //   BM_RvdNeighborCache/N: icosphere level 5, N seeds (random, then 5 Lloyd steps) moved by 2% of
@@ -98,9 +98,12 @@ void report(benchmark::State& state, const Pass& p) {
   state.counters["radius_searches"] = static_cast<double>(p.stats.radius_searches);
 }
 
-// RVD against Delaunay with state.range(0) random seeds on `mesh`.
+// RVD against Delaunay with state.range(0) random seeds on `mesh`, the RVD on state.range(1)
+// threads (CGAL's Delaunay is serial: the issue's ratio is for one thread each).
 void random_seeds_pass(benchmark::State& state, const TriangleMesh& mesh) {
   const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(1)));
   for (auto _ : state) report(state, rvd_pass(mesh, seeds));
 }
 
@@ -108,10 +111,7 @@ void BM_RvdVsDelaunay(benchmark::State& state) {
   random_seeds_pass(state, testing::icosphere(4));
 }
 BENCHMARK(BM_RvdVsDelaunay)
-    ->Arg(1'000)
-    ->Arg(10'000)
-    ->Arg(100'000)
-    ->Arg(1'000'000)
+    ->ArgsProduct({{1'000, 10'000, 100'000, 1'000'000}, {1, 2}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
@@ -164,8 +164,7 @@ void BM_RvdCoarseInput(benchmark::State& state) {
   random_seeds_pass(state, testing::cube(1));
 }
 BENCHMARK(BM_RvdCoarseInput)
-    ->Arg(5'000)
-    ->Arg(50'000)
+    ->ArgsProduct({{5'000, 50'000}, {1, 2}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
