@@ -51,6 +51,11 @@ struct Adjacency {
   std::vector<std::size_t> start;
   std::vector<Index> other;
   std::size_t degree(Index v) const { return start[v + 1] - start[v]; }
+  // Whether edge (v, w) is one of them (each vertex's list is sorted).
+  bool joins(Index v, Index w) const {
+    return std::binary_search(other.begin() + static_cast<std::ptrdiff_t>(start[v]),
+                              other.begin() + static_cast<std::ptrdiff_t>(start[v + 1]), w);
+  }
 };
 
 Adjacency adjacency(std::size_t vertices, const std::vector<Edge>& edges) {
@@ -197,16 +202,12 @@ bool free_at_both_ends(const Adjacency& adj, const FeatureCurve& c) {
 bool narrow_at_boundary(const std::vector<FeatureSector>& sectors, const Adjacency& boundary,
                         const FeatureCurve& c) {
   if (c.closed || c.vertices.size() < 2) return false;
-  const auto on_boundary = [&](Index v, Index w) {
-    for (std::size_t k = boundary.start[v]; k < boundary.start[v + 1]; ++k)
-      if (boundary.other[k] == w) return true;
-    return false;
-  };
   const auto narrow = [&](Index end, Index next) {
     auto s = std::lower_bound(sectors.begin(), sectors.end(), end,
                               [](const FeatureSector& x, Index v) { return x.apex < v; });
     for (; s != sectors.end() && s->apex == end; ++s)
-      if (s->from == next && s->angle_deg < kNarrowAngleDeg && on_boundary(end, s->to)) return true;
+      if (s->from == next && s->angle_deg < kNarrowAngleDeg && boundary.joins(end, s->to))
+        return true;
     return false;
   };
   const std::vector<Index>& v = c.vertices;
@@ -368,15 +369,15 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       return 2 * v.smooth < v.measured;
     };
     const Adjacency boundary = adjacency(mesh.vertices.size(), boundary_edges);
-    // Only a surface with a boundary has a crease to drop for meeting it narrowly.
+    // Only a surface with a boundary has a crease to drop for meeting it narrowly; with no
+    // sectors (none, or not at scale) narrow_at_boundary drops nothing.
     const std::vector<FeatureSector> sectors = settings.creases_at_scale && !boundary_edges.empty()
                                                    ? feature_sectors(mesh, f)
                                                    : std::vector<FeatureSector>{};
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
-      if (droppable[c] &&
-          (twin[c] || rough_around(c) || !feature_at_scale(c) ||
-           (settings.creases_at_scale && narrow_at_boundary(sectors, boundary, f.curves[c]))))
+      if (droppable[c] && (twin[c] || rough_around(c) || !feature_at_scale(c) ||
+                           narrow_at_boundary(sectors, boundary, f.curves[c])))
         dropped.insert(dropped.end(), curve_edges[c].begin(), curve_edges[c].end());
     if (!dropped.empty()) {
       drop_edges(std::move(dropped), f);
