@@ -88,8 +88,12 @@ TriangleMesh notched_plate(int n, int notch) {
 TEST(Features, SharpTurnsCloserThanTheScaleAllowsAreNoCorners) {
   const TriangleMesh plate = notched_plate(40, 4);  // 9 notches, 36 turns 1/40 apart
   FeatureSettings s;
-  s.scale = 0.05;  // a cell is half the scale: every turn is a corner, with the plate's 4
+  s.scale = 0.04;  // a cell is 0.625 of the scale: every turn is a corner, with the plate's 4
   EXPECT_EQ(detect_features(plate, s).corners.size(), 40u);
+  // Half the scale: a notch's sides are steps between two turns, under 0.55 of it (an edge that
+  // short faces an angle under 30°), so the notches go.
+  s.scale = 0.05;
+  EXPECT_EQ(detect_features(plate, s).corners.size(), 4u);
   s.scale = 0.1;  // a quarter: under 0.3 of it, so only the plate's corners are left
   const Features f = detect_features(plate, s);
   EXPECT_EQ(f.corners.size(), 4u);
@@ -99,6 +103,25 @@ TEST(Features, SharpTurnsCloserThanTheScaleAllowsAreNoCorners) {
   s.scale = 0.1;
   s.creases_at_scale = false;  // a feature angle given: every turn is a corner at any scale
   EXPECT_EQ(detect_features(plate, s).corners.size(), 40u);
+}
+
+TEST(Features, ATurnNearAJunctionOfCurvesIsACornerDownToTheShorterBound) {
+  // A plain plate (no notch) with a feature edge given from its rim at x = 38/40 inwards: the
+  // plate's corner at x = 1 is a turn 0.05 from that junction, as a CAD part's corner next to
+  // where a crease meets its outline.
+  const TriangleMesh plate = notched_plate(40, 41);
+  auto id = [](int i, int j) { return static_cast<Index>(j * 41 + i); };
+  FeatureSettings s;
+  s.user_edges = {{id(38, 0), id(38, 1)}};
+  const auto corner_at_x1 = [&](const Features& f) {
+    return std::count(f.corners.begin(), f.corners.end(), id(40, 0)) == 1;
+  };
+  s.scale = 0.1;  // half the scale: short for a step between two turns, not beside a junction
+  const Features f = detect_features(plate, s);
+  EXPECT_EQ(f.corners.size(), 6u);  // the plate's 4 and the given edge's ends
+  EXPECT_TRUE(corner_at_x1(f));
+  s.scale = 0.2;  // a quarter: under 0.3 of it even there
+  EXPECT_FALSE(corner_at_x1(detect_features(plate, s)));
 }
 
 TEST(Features, NarrowestSectorIsTheAngleBetweenTwoFeaturesAtAVertex) {
