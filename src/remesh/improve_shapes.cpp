@@ -9,6 +9,7 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <ranges>
 #include <span>
 
 #include "features/curve_projector.hpp"
@@ -761,10 +762,10 @@ class ShapeImprover {
   // their moves' stars), and the floor. (The collapse budget only shrinks.)
   bool balance_stuck(Index t) const {
     const std::uint64_t at = balance_failed_at_[t];
-    if (at == 0 || at < floor_at_) return false;
+    if (!failed_under_this_floor(at)) return false;
     std::vector<Index> reach(mesh_.triangles[t].begin(), mesh_.triangles[t].end());
     for (int k = 0; k < 3; ++k) reach = ring(reach);
-    return std::ranges::all_of(reach, [&](Index w) { return changed_at_[w] < at; });
+    return unchanged_since(at, reach);
   }
 
   // The stamps of some vertices, put back where a change is undone: the mesh is then exactly as
@@ -795,11 +796,19 @@ class ShapeImprover {
   // quarter of this step's on an output that keeps badly shaped triangles (femur.off at 1k).
   bool stuck(Index v) const {
     const std::uint64_t at = stuck_at_[v];
-    if (at == 0 || at < floor_at_) return false;
-    for (Index t : around_[v])
-      for (Index w : mesh_.triangles[t])
-        if (changed_at_[w] > at) return false;
-    return changed_at_[v] < at;
+    const auto star =
+        around_[v] |
+        std::views::transform([&](Index t) -> const Triangle& { return mesh_.triangles[t]; }) |
+        std::views::join;  // v and its neighbours
+    return failed_under_this_floor(at) && unchanged_since(at, star);
+  }
+
+  // The two halves of stuck() and balance_stuck(): a search that failed at clock `at` (0: never)
+  // under the floor as it is now, and none of the vertices it read changed since.
+  bool failed_under_this_floor(std::uint64_t at) const { return at != 0 && at >= floor_at_; }
+  template <std::ranges::input_range Vertices>
+  bool unchanged_since(std::uint64_t at, Vertices&& read) const {
+    return std::ranges::all_of(read, [&](Index w) { return changed_at_[w] < at; });
   }
 
   // The compass search of try_move, from `at`: returns the best place found. On the surface, a
