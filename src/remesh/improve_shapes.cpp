@@ -9,7 +9,6 @@
 #include <iterator>
 #include <limits>
 #include <optional>
-#include <ranges>
 #include <span>
 
 #include "features/curve_projector.hpp"
@@ -796,18 +795,16 @@ class ShapeImprover {
   // quarter of this step's on an output that keeps badly shaped triangles (femur.off at 1k).
   bool stuck(Index v) const {
     const std::uint64_t at = stuck_at_[v];
-    const auto star =
-        around_[v] |
-        std::views::transform([&](Index t) -> const Triangle& { return mesh_.triangles[t]; }) |
-        std::views::join;  // v and its neighbours
-    return failed_under_this_floor(at) && unchanged_since(at, star);
+    return failed_under_this_floor(at) && std::ranges::all_of(around_[v], [&](Index t) {
+             return unchanged_since(at, mesh_.triangles[t]);  // v and its neighbours
+           });
   }
 
   // The two halves of stuck() and balance_stuck(): a search that failed at clock `at` (0: never)
   // under the floor as it is now, and none of the vertices it read changed since.
   bool failed_under_this_floor(std::uint64_t at) const { return at != 0 && at >= floor_at_; }
-  template <std::ranges::input_range Vertices>
-  bool unchanged_since(std::uint64_t at, Vertices&& read) const {
+  template <class Vertices>
+  bool unchanged_since(std::uint64_t at, const Vertices& read) const {
     return std::ranges::all_of(read, [&](Index w) { return changed_at_[w] < at; });
   }
 
