@@ -25,12 +25,11 @@ namespace {
 // 2 asin(0.15) = 17° opposite it. The rims of scans' holes are jagged, every other vertex a sharp
 // turn a fifth of an edge from the next (lion.off, stanford-bunny.obj at 5k: 5° kept as corners).
 constexpr double kShortestTurnCurve = 0.3;
-// Between two such turns (a step of a staircase rim, where the turns go one way and back) the
-// curve must be longer still: an edge under 2 sin(15°) = 0.52 of its neighbours' length faces an
-// angle under 30°, the quality promise (stanford-bunny.obj at 5k, its base's holes stepped by
-// 0.3 and 0.5 edges: θmin 16.0° with 36 corners, 40.2° with 18). A turn next to a junction of
-// curves keeps the shorter bound: that is how a CAD part's creases meet (blade.off, a true corner
-// 0.4 edges from a junction at 5k).
+// Between two such turns (a step of a staircase rim) the curve must be longer still: an edge
+// under 2 sin(15°) = 0.52 of its neighbours' length faces an angle under 30°, the quality promise
+// (stanford-bunny.obj at 5k, its base's holes stepped by 0.3 and 0.5 edges: θmin 16.0° with 36
+// corners, 40.2° with 20). A turn next to a junction of curves keeps the shorter bound: that is
+// how a CAD part's creases meet (blade.off, a true corner 0.4 edges from a junction at 5k).
 constexpr double kShortestStep = 0.55;
 // ... unless all the feature curves it is connected to, together, are shorter than this many: the
 // rim of a small hole or the outline of a small part, whose corners are its shape.
