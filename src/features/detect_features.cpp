@@ -57,11 +57,6 @@ struct Adjacency {
   std::vector<std::size_t> start;
   std::vector<Index> other;
   std::size_t degree(Index v) const { return start[v + 1] - start[v]; }
-  // Whether edge (v, w) is one of them (each vertex's list is sorted).
-  bool joins(Index v, Index w) const {
-    return std::binary_search(other.begin() + static_cast<std::ptrdiff_t>(start[v]),
-                              other.begin() + static_cast<std::ptrdiff_t>(start[v + 1]), w);
-  }
 };
 
 Adjacency adjacency(std::size_t vertices, const std::vector<Edge>& edges) {
@@ -205,15 +200,17 @@ bool free_at_both_ends(const Adjacency& adj, const FeatureCurve& c) {
 // Whether curve c leaves an end along a boundary edge with a sector of the surface under
 // kNarrowAngleDeg between them: the wedge holds no triangle better than that angle, and without
 // the crease the boundary alone is kept (a scan's lip fading into a jagged hole rim, lion.off at
-// 5k: 8.6°). `sectors` are the feature sectors, sorted by apex.
-bool narrow_at_boundary(const std::vector<FeatureSector>& sectors, const Adjacency& boundary,
-                        const FeatureCurve& c) {
+// 5k: 8.6°). `sectors` are the feature sectors, sorted by apex; `boundary` the boundary edges,
+// sorted.
+bool narrow_at_boundary(const std::vector<FeatureSector>& sectors,
+                        const std::vector<Edge>& boundary, const FeatureCurve& c) {
   if (c.closed || c.vertices.size() < 2) return false;
   const auto narrow = [&](Index end, Index next) {
     auto s = std::lower_bound(sectors.begin(), sectors.end(), end,
                               [](const FeatureSector& x, Index v) { return x.apex < v; });
     for (; s != sectors.end() && s->apex == end; ++s)
-      if (s->from == next && s->angle_deg < kNarrowAngleDeg && boundary.joins(end, s->to))
+      if (s->from == next && s->angle_deg < kNarrowAngleDeg &&
+          std::binary_search(boundary.begin(), boundary.end(), edge_of(end, s->to)))
         return true;
     return false;
   };
@@ -272,8 +269,8 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     throw InvalidArgument("the feature angle must be between 0 and 180 degrees");
   const double cos_threshold = std::cos(settings.angle_deg * std::numbers::pi / 180);
   Features f;
-  std::vector<Edge> sharp_edges;  // kept for being sharp, and for nothing else
-  std::vector<Edge> boundary_edges;
+  std::vector<Edge> sharp_edges;     // kept for being sharp, and for nothing else
+  std::vector<Edge> boundary_edges;  // both sorted, as `uses` is
   const std::vector<EdgeUse> uses = edge_uses(mesh);
   for (std::size_t k = 0; k < uses.size();) {
     std::size_t end = k;
@@ -375,7 +372,6 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       const CreaseScale::Votes& v = smooth[networks.find(f.curves[c].vertices[0])];
       return 2 * v.smooth < v.measured;
     };
-    const Adjacency boundary = adjacency(mesh.vertices.size(), boundary_edges);
     // Only a surface with a boundary has a crease to drop for meeting it narrowly; with no
     // sectors (none, or not at scale) narrow_at_boundary drops nothing.
     const std::vector<FeatureSector> sectors = settings.creases_at_scale && !boundary_edges.empty()
@@ -384,7 +380,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     std::vector<Edge> dropped;
     for (std::size_t c = 0; c < f.curves.size(); ++c)
       if (droppable[c] && (twin[c] || rough_around(c) || !feature_at_scale(c) ||
-                           narrow_at_boundary(sectors, boundary, f.curves[c])))
+                           narrow_at_boundary(sectors, boundary_edges, f.curves[c])))
         dropped.insert(dropped.end(), curve_edges[c].begin(), curve_edges[c].end());
     if (!dropped.empty()) {
       drop_edges(std::move(dropped), f);
