@@ -15,6 +15,7 @@
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/rvd.hpp"
+#include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/curve_projector.hpp"
 #include "features/feature_seeds.hpp"
@@ -617,6 +618,33 @@ TEST(HardCases, ATinyComponentBesideALargeOne) {
   fan.vertices = {{1.1, 0, 0}, {1.1, 0.01, 0}, {1.1, 0.005, 0.01}, {1.1, -0.005, 0.01}};
   fan.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}};
   expect_valid_remesh(concatenate(icosphere(3), fan), 500);
+}
+
+// A boundary that touches itself at a point, stored as two vertices there (beetle-alt.obj of a
+// public test set, outside the corpus, crashed at 1k: feature seeds were placed once per point,
+// so the corners after the pinch's second copy named other corners' seeds, and one past the end).
+TEST(HardCases, ABoundaryThatTouchesItselfAtAPoint) {
+  expect_valid_remesh(sheet_pinched_at_a_point(4), 300);
+}
+
+TEST(FeatureSeeds, CornersAtOnePointShareOneSeedThatEachNames) {
+  const TriangleMesh sheet = sheet_pinched_at_a_point(4);
+  Features features;  // the two copies of the pinch, and the sheet's first vertex: corners alone
+  features.corners.push_back(0);
+  for (Index v = 1; v < sheet.vertices.size(); ++v)
+    if (std::count(sheet.vertices.begin(), sheet.vertices.end(), sheet.vertices[v]) == 2)
+      features.corners.push_back(v);
+  ASSERT_EQ(features.corners.size(), 3u);
+  std::vector<Vec3> seeds = sample_surface(sheet, 40, 1);
+  const SeedConstraints c = place_feature_seeds(seeds, sheet, features,
+                                                CurveProjector(sheet, features), CurveSpacing(0.1));
+  ASSERT_EQ(c.corner_seed.size(), features.corners.size());
+  for (std::size_t k = 0; k < features.corners.size(); ++k) {
+    EXPECT_EQ(seeds[c.corner_seed[k]], sheet.vertices[features.corners[k]]);
+    EXPECT_EQ(c.kind[c.corner_seed[k]], SeedConstraints::Kind::corner);
+  }
+  EXPECT_EQ(c.corner_seed[1], c.corner_seed[2]);
+  EXPECT_EQ(std::count(c.kind.begin(), c.kind.end(), SeedConstraints::Kind::corner), 2);
 }
 
 // The cells around the hole are annuli in one piece, and the triangulation closes the hole

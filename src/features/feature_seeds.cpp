@@ -104,11 +104,14 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
                         static_cast<std::uint32_t>(c)});
     }
   }
-  // Points wanted twice (curves that overlap in space) are wanted once: seeds must be distinct.
-  std::set<Vec3> seen;
-  std::erase_if(wanted, [&](const Wanted& w) { return !seen.insert(w.point).second; });
-  if (wanted.size() >= seeds.size())
-    throw InvalidArgument("the sharp features need " + std::to_string(wanted.size()) +
+  // A point wanted twice (curves that overlap in space; corners at one point, as the two copies
+  // of a vertex that repair kept apart) gets one seed: seeds must be distinct. Each corner still
+  // names its seed, in the order of Features::corners.
+  std::set<Vec3> points;
+  for (const Wanted& w : wanted) points.insert(w.point);
+  const std::size_t distinct = points.size();
+  if (distinct >= seeds.size())
+    throw InvalidArgument("the sharp features need " + std::to_string(distinct) +
                           " vertices on their own, and the output has " +
                           std::to_string(seeds.size()) +
                           ": ask for more vertices, a larger feature angle, or no features");
@@ -120,7 +123,12 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
   const PointTree tree(seeds);
   std::vector<bool> taken(seeds.size(), false);
   std::vector<Index> near;
+  std::map<Vec3, Index> placed;  // wanted points, and the seed each got
   for (const Wanted& w : wanted) {
+    if (const auto at = placed.find(w.point); at != placed.end()) {
+      if (w.kind == SeedConstraints::Kind::corner) result.corner_seed.push_back(at->second);
+      continue;
+    }
     // The nearest seed not taken: widen the search until one turns up (it must: fewer wanted
     // points than seeds).
     Index chosen = 0;
@@ -138,6 +146,7 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
       }
     }
     taken[chosen] = true;
+    placed.emplace(w.point, chosen);
     seeds[chosen] = w.point;
     result.kind[chosen] = w.kind;
     result.curve[chosen] = w.curve;

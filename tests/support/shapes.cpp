@@ -6,6 +6,7 @@
 #include <numbers>
 #include <numeric>
 #include <random>
+#include <tuple>
 
 #include "cvtmesh/repair.hpp"
 
@@ -124,6 +125,30 @@ TriangleMesh disk(int rings, int sectors) {
       add_quad(m, id(k, s), id(k + 1, s), id(k + 1, s + 1), id(k, s + 1));
     }
   }
+  return m;
+}
+
+TriangleMesh sheet_pinched_at_a_point(int n) {
+  TriangleMesh m;
+  std::map<std::tuple<int, int, bool>, Index> id;
+  const auto vertex = [&](int i, int j, bool second_copy) {
+    const auto [at, added] = id.emplace(std::tuple(i, j, second_copy), m.vertices.size());
+    if (added) m.vertices.push_back({i / (3.0 * n), j / (3.0 * n), 0});
+    return at->second;
+  };
+  for (int bi = 0; bi < 3; ++bi)
+    for (int bj = 0; bj < 3; ++bj) {
+      if ((bi == 1 && bj == 1) || (bi == 2 && bj == 2)) continue;
+      // The right-middle block's fan around the pinch gets the second copy.
+      const auto corner = [&](int i, int j) {
+        return vertex(i, j, bi == 2 && bj == 1 && i == 2 * n && j == 2 * n);
+      };
+      for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) {
+          const int i = bi * n + a, j = bj * n + b;
+          add_quad(m, corner(i, j), corner(i + 1, j), corner(i + 1, j + 1), corner(i, j + 1));
+        }
+    }
   return m;
 }
 

@@ -35,6 +35,12 @@ TriangleMesh cylinder(int rings, int sectors);
 // by `at`: a flat sheet, a strip, a wedge.
 TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double)>& at);
 
+// The unit square in z = 0 as 3 × 3 blocks of n × n quads, without the centre block and the
+// top-right one: the two holes meet at the point (2/3, 2/3), which is stored twice, once for each
+// fan of triangles around it (as repair leaves a vertex that merging would make non-manifold).
+// One component, one boundary loop that touches itself there, Euler characteristic 1.
+TriangleMesh sheet_pinched_at_a_point(int n);
+
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
 
