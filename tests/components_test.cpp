@@ -178,6 +178,61 @@ TEST(Components, PartsTouchingAtAVertexStillTouchThereAndNowhereElse) {
   EXPECT_EQ(r.mesh.vertices.size(), 600u);
 }
 
+// Two sheets of one component touching at a vertex (cow.obj of a public test set, outside the
+// corpus, came out a sphere at every count): the vertex is split per sheet, remeshed as a corner
+// of each, and welded again; where a cell reaches across both sheets there (one piece for both,
+// or a neighbour of both), topology control refines until the sheets are apart.
+TEST(Components, SheetsOfOneComponentTouchingAtAVertexStillTouchThere) {
+  const TriangleMesh m = pinched_torus(0.4, 96, 24);
+  const TopologyReport input = analyze_topology(m);
+  ASSERT_EQ(input.components, 1u);
+  ASSERT_EQ(input.nonmanifold_vertices, 1u);
+  ASSERT_EQ(input.euler_characteristic, 1);
+  for (const std::size_t vertices : {60, 150, 600}) {
+    RemeshSettings s;
+    s.vertices = vertices;
+    const RemeshResult r = remesh(m, s);
+    const TopologyReport t = analyze_topology(r.mesh);
+    EXPECT_TRUE(same_topology(t, input))
+        << vertices << " vertices: Euler characteristic " << t.euler_characteristic;
+    EXPECT_EQ(t.nonmanifold_edges, 0u);
+    EXPECT_EQ(t.nonmanifold_vertices, 1u);
+    EXPECT_TRUE(t.consistently_oriented);
+    EXPECT_EQ(std::count(r.mesh.vertices.begin(), r.mesh.vertices.end(), m.vertices[0]), 1);
+  }
+}
+
+// The same flat sheet as a boundary that touches itself (one vertex there, two fans), and a user
+// edge from that vertex into the second fan: it goes to the copy whose fan has the edge.
+TEST(Components, AUserEdgeAtAVertexWhereSheetsTouchIsKeptOnItsSheet) {
+  TriangleMesh m = sheet_pinched_at_a_point(4);
+  Index first = kNoIndex, second = kNoIndex;
+  for (Index v = 0; v < m.vertices.size(); ++v)
+    if (std::count(m.vertices.begin(), m.vertices.end(), m.vertices[v]) == 2)
+      (first == kNoIndex ? first : second) = v;
+  ASSERT_NE(second, kNoIndex);
+  Edge e{};
+  for (Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == second) {
+        t[k] = first;
+        const Index other = t[(k + 1) % 3];
+        e = {std::min(first, other), std::max(first, other)};
+      }
+  m.vertices.erase(m.vertices.begin() + second);
+  for (Triangle& t : m.triangles)
+    for (Index& v : t) v -= v > second;
+  for (Index& v : e) v -= v > second;
+  const TopologyReport input = analyze_topology(m);
+  ASSERT_EQ(input.nonmanifold_vertices, 1u);
+  RemeshSettings s;
+  s.vertices = 300;
+  s.features.user_edges = {e};
+  const RemeshResult r = remesh(m, s);
+  EXPECT_TRUE(std::binary_search(r.features.edges.begin(), r.features.edges.end(), e));
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), input));
+}
+
 TEST(Components, TheOutputDoesNotDependOnTheThreadCount) {
   RemeshSettings s;
   s.vertices = 500;

@@ -7,6 +7,7 @@
 #include "remesh/flip_links.hpp"
 #include "remesh/last_step.hpp"
 #include "remesh/mend_topology.hpp"
+#include "remesh/pinch_defects.hpp"
 
 namespace cvtmesh {
 
@@ -123,14 +124,16 @@ Assessment assess(const MendContext& m, const SpecialEdges& special, const Trian
   const TopologyReport t = analyze_topology(a.finished);
   const TopologyReport& in = m.surface_topology;
   if (in.is_manifold()) {
-    a.topology_kept = t.is_manifold() && same_topology(t, in);
+    const std::vector<Triangle> pinched = pinch_defects(m.surface, m.features.corners, a.finished);
+    a.topology_kept = t.is_manifold() && same_topology(t, in) && pinched.empty();
     if (!a.topology_kept) {
       a.defects = find_output_defects(
           a.finished, boundary_seeds(m, special, constraints, a.finished), in.orientable);
+      a.defects.triangles.insert(a.defects.triangles.end(), pinched.begin(), pinched.end());
       TriangleMesh last = a.finished;
       finish_manifold(last, in, m.projector);
       const TopologyReport after = analyze_topology(last);
-      a.rescued = after.is_manifold() && same_topology(after, in);
+      a.rescued = after.is_manifold() && same_topology(after, in) && pinched.empty();
     }
   } else {
     // The input's own non-manifold edges are no defects of its output: refining around them

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 
 #include "features/curve_projector.hpp"
 #include "features/curve_spacing.hpp"
@@ -34,9 +35,57 @@ struct Component {
   double area = 0;
 };
 
+// Where two sheets of one component touch at a vertex (its triangles form several fans, joined
+// across edges of two triangles, and no edge of three or more ends there), each fan but the first
+// gets a copy of the vertex, and every copy is a pinch: remeshed as a corner, welded again in the
+// output, as where components touch.
+void split_touching_fans(Component& part) {
+  TriangleMesh& mesh = part.mesh;
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  UnionFind fans(3 * mesh.triangles.size());
+  std::vector<bool> branching(mesh.vertices.size(), false);
+  const auto corner = [&](std::size_t t, Index v) {
+    const Triangle& f = mesh.triangles[t];
+    return 3 * t + static_cast<std::size_t>(f[0] == v ? 0 : f[1] == v ? 1 : 2);
+  };
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    for (const Index v : uses[i].edge) {
+      if (j - i == 2) fans.unite(corner(uses[i].triangle(), v), corner(uses[i + 1].triangle(), v));
+      if (j - i > 2) branching[v] = true;
+    }
+    i = j;
+  }
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> first_fan(mesh.vertices.size(), kNone);
+  std::map<std::size_t, Index> copy_of_fan;  // fans beyond their vertex's first: the copy
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Index v = mesh.triangles[t][k];
+      const std::size_t fan = fans.find(3 * t + static_cast<std::size_t>(k));
+      if (branching[v] || first_fan[v] == fan) continue;
+      if (first_fan[v] == kNone) {
+        first_fan[v] = fan;
+        continue;
+      }
+      const auto [at, added] = copy_of_fan.emplace(fan, static_cast<Index>(mesh.vertices.size()));
+      if (added) {
+        mesh.vertices.push_back(mesh.vertices[v]);
+        part.input_vertex.push_back(part.input_vertex[v]);
+        part.pinches.push_back(v);
+        part.pinches.push_back(at->second);
+      }
+      mesh.triangles[t][k] = at->second;
+    }
+  std::sort(part.pinches.begin(), part.pinches.end());
+  part.pinches.erase(std::unique(part.pinches.begin(), part.pinches.end()), part.pinches.end());
+}
+
 // Connected components (triangles sharing an edge), ordered by their first triangle. A vertex
 // where components touch (a non-manifold vertex, as where two cones meet tip to tip) is in each
-// of them, as one of their `pinches`.
+// of them, as one of their `pinches`; so is each copy of one where sheets of a component touch
+// (split_touching_fans).
 std::vector<Component> split_components(const TriangleMesh& mesh) {
   UnionFind sets(mesh.triangles.size());
   const std::vector<EdgeUse> uses = edge_uses(mesh);
@@ -78,6 +127,7 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
     part.area = surface_area(part.mesh);
     for (Index v = 0; v < part.input_vertex.size(); ++v)
       if (components_at[part.input_vertex[v]] > 1) part.pinches.push_back(v);
+    split_touching_fans(part);
   }
   return parts;
 }
@@ -155,29 +205,33 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
     check.sharp_edges = false;
     detect_features(mesh, check);
   }
-  // A vertex's id in component c; a vertex where components touch is in several.
-  auto local_in = [&](Index c, Index v) {
-    if (component[v] == c) return local[v];
+  // The edge in component c's ids, if c has it. A vertex where components or sheets touch has
+  // an id in each part, and one per fan: the edge's is the one whose triangles have the edge.
+  auto local_edge = [&](Index c, const Edge& e) -> std::optional<Edge> {
+    if (!pinch[e[0]] && !pinch[e[1]])
+      return Edge{std::min(local[e[0]], local[e[1]]), std::max(local[e[0]], local[e[1]])};
     const std::vector<Index>& ids = parts[c].input_vertex;
-    return static_cast<Index>(std::find(ids.begin(), ids.end(), v) - ids.begin());
-  };
-  auto has_edge = [&](Index c, Index a, Index b) {
-    const Index n = static_cast<Index>(parts[c].input_vertex.size());
-    const Index la = local_in(c, a), lb = local_in(c, b);
-    if (la == n || lb == n) return false;
     for (const Triangle& t : parts[c].mesh.triangles)
-      if (std::count(t.begin(), t.end(), la) + std::count(t.begin(), t.end(), lb) == 2) return true;
-    return false;
+      for (int k = 0; k < 3; ++k) {
+        const Index a = t[k], b = t[(k + 1) % 3];
+        if ((ids[a] == e[0] && ids[b] == e[1]) || (ids[a] == e[1] && ids[b] == e[0]))
+          return Edge{std::min(a, b), std::max(a, b)};
+      }
+    return std::nullopt;
   };
   for (const Edge& e : settings.features.user_edges) {
     // The component of its triangles: that of an end in one component only, or else (both ends
-    // where components touch) the one that has the edge.
-    Index home = !pinch[e[0]] ? component[e[0]] : !pinch[e[1]] ? component[e[1]] : kNoIndex;
-    for (Index c = 0; home == kNoIndex && c < parts.size(); ++c)
-      if (has_edge(c, e[0], e[1])) home = c;
-    if (home == kNoIndex) continue;  // on a component without area: nothing to keep
-    const Index a = local_in(home, e[0]), b = local_in(home, e[1]);
-    all[home].features.user_edges.push_back({std::min(a, b), std::max(a, b)});
+    // where components touch) the one that has the edge; at a vertex where sheets touch, the
+    // copy whose fan has it.
+    const Index home = !pinch[e[0]] ? component[e[0]] : !pinch[e[1]] ? component[e[1]] : kNoIndex;
+    if (home == kNoIndex && !pinch[e[0]]) continue;  // on a component without area
+    for (Index c = home == kNoIndex ? 0 : home; c < parts.size(); ++c) {
+      if (const std::optional<Edge> local_e = local_edge(c, e)) {
+        all[c].features.user_edges.push_back(*local_e);
+        break;
+      }
+      if (home != kNoIndex) break;
+    }
   }
   // A vertex where components touch is a corner anyway.
   for (const Index v : settings.features.user_corners)
@@ -292,18 +346,37 @@ void find_pinches(const Component& part, const TriangleMesh& output, Index offse
       found.emplace_back(at->second, offset + v);
 }
 
-// Welds the output vertices found at the same pinch (one per component that kept it) into the
-// first, so that the output touches itself where the input did, and drops the others.
+// Welds the output vertices found at the same pinch (one per component or sheet that kept it)
+// into the first, so that the output touches itself where the input did, and drops the others;
+// but not those of a pinch whose vertices share a neighbour (topology control failed to part
+// the sheets there), whose edges to it the weld would make non-manifold.
 void weld_pinches(RemeshResult& all, std::vector<std::pair<Index, Index>> found) {
   std::sort(found.begin(), found.end());
+  std::vector<std::vector<Index>> neighbours(all.mesh.vertices.size());
+  std::vector<bool> at_pinch(all.mesh.vertices.size(), false);
+  for (const auto& [input, output] : found) at_pinch[output] = true;
+  for (const Triangle& t : all.mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (at_pinch[t[k]])
+        for (const int j : {1, 2}) neighbours[t[k]].push_back(t[(k + j) % 3]);
   std::vector<Index> into(all.mesh.vertices.size());
   std::iota(into.begin(), into.end(), Index{0});
   bool welded = false;
-  for (std::size_t k = 1; k < found.size(); ++k)
-    if (found[k].first == found[k - 1].first) {
-      into[found[k].second] = into[found[k - 1].second];
-      welded = true;
+  for (std::size_t i = 0, j = 0; i < found.size(); i = j) {
+    // The pinch's vertices and their neighbours, each vertex's listed once: a repeat is shared.
+    std::vector<Index> around;
+    for (j = i; j < found.size() && found[j].first == found[i].first; ++j) {
+      std::vector<Index>& n = neighbours[found[j].second];
+      std::sort(n.begin(), n.end());
+      n.erase(std::unique(n.begin(), n.end()), n.end());
+      around.insert(around.end(), n.begin(), n.end());
+      around.push_back(found[j].second);
     }
+    std::sort(around.begin(), around.end());
+    if (j - i < 2 || std::adjacent_find(around.begin(), around.end()) != around.end()) continue;
+    for (std::size_t k = i + 1; k < j; ++k) into[found[k].second] = found[i].second;
+    welded = true;
+  }
   if (!welded) return;
   std::vector<Index> new_id(into.size());
   std::vector<Vec3> kept;
@@ -331,7 +404,8 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
   // A component without area (degenerate triangles only) has nothing to remesh: the whole
   // gives it no seed either.
   std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
-  if (parts.size() <= 1) return remesh_unit_topology_first(mesh, settings).result;
+  if (parts.empty() || (parts.size() == 1 && parts[0].pinches.empty()))
+    return remesh_unit_topology_first(mesh, settings).result;
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<RemeshSettings> part_settings = component_settings(mesh, parts, settings);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <span>
 
 #include "cvtmesh/repair.hpp"
@@ -51,7 +52,8 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
 }
 
 // Per output vertex, where improve_shapes may move it: a curve seed along its curve; a corner,
-// or any other end of a traced feature edge, nowhere; the rest on the surface.
+// or any other end of a traced feature edge, nowhere; the rest on the surface. Every vertex at a
+// corner is one (a pinch: one vertex per sheet that touches there, welded later).
 std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
                                            const std::map<Vec3, Index>& id,
                                            const std::vector<Vec3>& seeds,
@@ -66,6 +68,10 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
         const bool curve = constraints.kind[s] == SeedConstraints::Kind::curve;
         support[it->second] = {curve ? Kind::curve : Kind::fixed, constraints.curve[s]};
       }
+  std::set<Vec3> corners;
+  for (const Index s : constraints.corner_seed) corners.insert(seeds[s]);
+  for (Index v = 0; v < output.vertices.size(); ++v)
+    if (corners.contains(output.vertices[v])) support[v].kind = Kind::fixed;
   return support;
 }
 

@@ -10,12 +10,18 @@ namespace cvtmesh {
 void MultiNerveBuilder::begin(std::size_t chunks) {
   pieces_.begin(chunks);
   chunks_.assign(chunks, {});
+  at_seed_.assign(chunks, {});
 }
 
 void MultiNerveBuilder::polygon(std::size_t chunk, const RvdPolygon& poly) {
   pieces_.polygon(chunk, poly);
-  for (std::size_t k = 0; k < poly.vertices.size(); ++k)
+  const Vec3& seed = rvd_.seeds()[poly.seed];
+  for (std::size_t k = 0; k < poly.vertices.size(); ++k) {
     if (const auto t = dual_triangle(poly, k)) chunks_[chunk].push_back({*t, poly.triangle});
+    const RvdVertex& v = poly.vertices[k];
+    if (v.symbols[0] < 0 && v.symbols[1] < 0 && v.point == seed)  // an input corner
+      at_seed_[chunk].push_back({poly.seed, poly.triangle});
+  }
 }
 
 void MultiNerveBuilder::end() {
@@ -26,16 +32,26 @@ void MultiNerveBuilder::end() {
   result_.vertices = seeds;
   vertex_seed_.resize(seeds.size());
   std::iota(vertex_seed_.begin(), vertex_seed_.end(), Index{0});
-  // Each piece's vertex: its seed for the cell's first (largest) piece, a new one otherwise.
+  // The pieces that reach their seed itself: at an input vertex that is stored twice, as where
+  // two sheets touch at a point (remesh splits such a vertex, one copy per sheet).
+  std::vector<bool> reach_seed(pieces.size(), false);
+  for (const auto& found : at_seed_)
+    for (const auto& [seed, triangle] : found) reach_seed[pieces_.piece_at(seed, triangle)] = true;
+  at_seed_.clear();
+  // Each piece's vertex: its seed for the cell's first (largest) piece, a new one otherwise, at
+  // the seed too if both pieces reach it (sheets touching at the seed, which still touch there).
   std::vector<Index> vertex(pieces.size());
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    if (i == 0 || pieces[i].seed != pieces[i - 1].seed) {
-      vertex[i] = pieces[i].seed;
+  for (std::size_t i = 0, first = 0; i < pieces.size(); ++i) {
+    const Index seed = pieces[i].seed;
+    if (i == 0 || seed != pieces[i - 1].seed) {
+      vertex[i] = seed;
+      first = i;
       continue;
     }
     vertex[i] = static_cast<Index>(result_.vertices.size());
-    result_.vertices.push_back(pieces[i].largest_centre);
-    vertex_seed_.push_back(pieces[i].seed);
+    const bool touching = reach_seed[i] && reach_seed[first];
+    result_.vertices.push_back(touching ? seeds[seed] : pieces[i].largest_centre);
+    vertex_seed_.push_back(seed);
   }
   // The three polygons around a type-C vertex lie in the input triangle it is in.
   for (const auto& found : chunks_)

@@ -6,6 +6,7 @@
 // each sheet use only vertices of that sheet, and no triangle joins two sheets or components.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "voronoi/cell_pieces.hpp"
@@ -20,8 +21,9 @@ class MultiNerveBuilder : public PolygonSink {
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
   // Vertices: the seeds, by id (each for its cell's largest piece), then one per other piece at
-  // the centroid of that piece's largest polygon, in CellPieceCollector order. Triangles oriented
-  // like the input facets, each once.
+  // the centroid of that piece's largest polygon (at the seed, where it and the first both reach
+  // it: sheets touching there), in CellPieceCollector order. Triangles oriented like the input
+  // facets, each once.
   const TriangleMesh& result() const { return result_; }
   // The seed each vertex of result() stands for (the identity on the seeds).
   const std::vector<Index>& vertex_seed() const { return vertex_seed_; }
@@ -34,6 +36,8 @@ class MultiNerveBuilder : public PolygonSink {
   const RestrictedVoronoiDiagram& rvd_;
   CellPieceCollector pieces_;
   std::vector<std::vector<Found>> chunks_;
+  // Per chunk, (seed, triangle) of the polygons with an input corner at their seed.
+  std::vector<std::vector<std::pair<Index, Index>>> at_seed_;
   TriangleMesh result_;
   std::vector<Index> vertex_seed_;
 };

@@ -152,6 +152,27 @@ TriangleMesh sheet_pinched_at_a_point(int n) {
   return m;
 }
 
+TriangleMesh pinched_torus(double r, int nu, int nv) {
+  TriangleMesh m;
+  m.vertices.push_back({1, 0, 0});  // the pinch
+  const double tau = 2 * std::numbers::pi;
+  for (int i = 1; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = tau * i / nu, v = tau * j / nv, radius = r * std::sqrt(std::sin(u / 2));
+      const double R = 1 + radius * std::cos(v);
+      m.vertices.push_back({R * std::cos(u), R * std::sin(u), radius * std::sin(v)});
+    }
+  const auto id = [&](int i, int j) { return static_cast<Index>(1 + (i - 1) * nv + (j % nv)); };
+  for (int j = 0; j < nv; ++j) {
+    m.triangles.push_back({0, id(1, j), id(1, j + 1)});
+    m.triangles.push_back({0, id(nu - 1, j + 1), id(nu - 1, j)});
+  }
+  for (int i = 1; i + 1 < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
 TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double)>& at) {
   TriangleMesh m;
   for (int j = 0; j <= ny; ++j)

@@ -41,6 +41,11 @@ TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double
 // One component, one boundary loop that touches itself there, Euler characteristic 1.
 TriangleMesh sheet_pinched_at_a_point(int n);
 
+// A torus around z (major radius 1) whose tube narrows to a point at angle 0, its radius
+// r √sin(u / 2) at angle u: one component, closed, Euler characteristic 1, the point one vertex
+// with two fans (two rounded ends touching). `nu` steps around, `nv` around the tube.
+TriangleMesh pinched_torus(double r, int nu, int nv);
+
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
 
