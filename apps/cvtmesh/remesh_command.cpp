@@ -103,8 +103,9 @@ int run_remesh(RemeshOptions o) {
   if (r.triangles_removed > 0 && r.holes_closed > 0)
     fmt::print(stderr,
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "
-               "topology control could not mend it (as where the input crosses itself); the {} "
-               "holes this opened were closed again with {} triangles and {} new vertices\n",
+               "topology control could not mend it (where the input crosses itself, or parts are "
+               "thinner than the spacing); {} holes were closed again with {} triangles and {} new "
+               "vertices\n",
                o.output, r.triangles_removed, r.holes_closed, r.triangles_closing_holes,
                r.vertices_closing_holes);
   else if (r.triangles_removed > 0)
@@ -112,6 +113,11 @@ int run_remesh(RemeshOptions o) {
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "
                "topology control could not mend it (more vertices would resolve the thin parts)\n",
                o.output, r.triangles_removed);
+  else if (r.holes_closed > 0)
+    fmt::print(stderr,
+               "{}: warning: {} holes that topology control left in the closed surface were "
+               "closed with {} triangles and {} new vertices\n",
+               o.output, r.holes_closed, r.triangles_closing_holes, r.vertices_closing_holes);
   if (!r.feature_edges_dropped.empty())
     fmt::print(stderr,
                "{}: warning: {} sharp edges not kept as features: tracing them cost the input's "

@@ -25,15 +25,15 @@ struct BoundaryStep {
 
 // The boundary loops of `mesh`, each walked against its triangles' orientation, so that a
 // triangle closing the hole on three consecutive loop vertices a, b, c is (a, b, c). Only the
-// loops made wholly of opened edges (edges of `removed`); nothing when a vertex has two boundary
-// edges leaving it (a non-manifold vertex: make_manifold leaves none).
+// loops made wholly of opened edges (edges of `removed`), unless `every`; nothing when a vertex
+// has two boundary edges leaving it (a non-manifold vertex: make_manifold leaves none).
 struct Loop {
   std::vector<Index> vertices;
   std::vector<Index> opposite;  // per edge (vertices[i], vertices[i + 1]): its triangle's third
 };
 std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
                                               const std::vector<EdgeUse>& uses,
-                                              std::span<const Triangle> removed) {
+                                              std::span<const Triangle> removed, bool every) {
   std::vector<Edge> opened;
   for (const Triangle& t : removed)
     for (int k = 0; k < 3; ++k) opened.push_back(edge_of(t[k], t[(k + 1) % 3]));
@@ -64,7 +64,7 @@ std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
       loop.vertices.push_back(v);
       loop.opposite.push_back(from[v]->opposite);
     }
-    if (all_opened) loops.push_back(std::move(loop));
+    if (all_opened || every) loops.push_back(std::move(loop));
   }
   return loops;
 }
@@ -95,7 +95,9 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
                                const TopologyReport& input, bool oriented,
                                const std::function<Vec3(const Vec3&)>& onto_surface) {
   const std::vector<EdgeUse> uses = edge_uses(mesh);  // sorted by edge
-  const std::optional<std::vector<Loop>> loops = opened_loops(mesh, uses, removed);
+  // A closed input's output has no hole of its own: every loop is one to close.
+  const bool closed_input = input.is_closed();
+  const std::optional<std::vector<Loop>> loops = opened_loops(mesh, uses, removed, closed_input);
   if (!loops || loops->empty()) return {};
   const std::size_t before = mesh.triangles.size(), vertices_before = mesh.vertices.size();
   // Whether the mesh as it came has the edge. The patches add none that another patch could
@@ -109,15 +111,24 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
     mesh.triangles.resize(before);
     mesh.vertices.resize(vertices_before);
   };
-  for (const Loop& loop : *loops) {
+  // A fan around a new vertex at the loop's centroid, onto the surface: it has no chord.
+  const auto fan_of = [&](const Loop& loop) {
+    Vec3 centroid;
+    for (const Index v : loop.vertices) centroid = centroid + mesh.vertices[v];
+    const auto centre = static_cast<Index>(mesh.vertices.size());
+    mesh.vertices.push_back(
+        onto_surface((1.0 / static_cast<double>(loop.vertices.size())) * centroid));
+    std::vector<Triangle> fan;
+    for (std::size_t i = 0; i < loop.vertices.size(); ++i)
+      fan.push_back({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()], centre});
+    return fan;
+  };
+  // Each loop's patch, or nothing where CGAL finds no triangulation.
+  const auto patch_of = [&](const Loop& loop) -> std::optional<std::vector<Triangle>> {
     std::optional<std::vector<Triangle>> patch = triangulated(mesh, loop);
-    if (!patch) {
-      restore();
-      return {};
-    }
+    if (!patch) return std::nullopt;
     // A chord the mesh has already (its two ends joined around the other side of a thin part)
-    // would make that edge non-manifold: then a fan around a new vertex closes the loop, which
-    // has no chord (its position: the loop's centroid, onto the surface).
+    // would make that edge non-manifold: then a fan closes the loop.
     const auto chord_reused = [&](const Triangle& t) {
       for (int k = 0; k < 3; ++k) {
         const Index a = t[k], b = t[(k + 1) % 3];
@@ -130,27 +141,46 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
       }
       return false;
     };
-    if (std::any_of(patch->begin(), patch->end(), chord_reused)) {
-      Vec3 centroid;
-      for (const Index v : loop.vertices) centroid = centroid + mesh.vertices[v];
-      const auto centre = static_cast<Index>(mesh.vertices.size());
-      mesh.vertices.push_back(
-          onto_surface((1.0 / static_cast<double>(loop.vertices.size())) * centroid));
-      patch->clear();
-      for (std::size_t i = 0; i < loop.vertices.size(); ++i)
-        patch->push_back({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()], centre});
-    }
-    mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
-  }
+    if (std::any_of(patch->begin(), patch->end(), chord_reused)) return fan_of(loop);
+    return patch;
+  };
   // Whatever the patches made (a fold against a kept triangle, patches meeting at a vertex of
-  // two loops), only a manifold with the input's topology is kept.
-  const std::vector<bool> may_bound(mesh.vertices.size(), true);
-  if (!find_output_defects(mesh, may_bound, oriented).empty() ||
-      !same_topology(analyze_topology(mesh), input)) {
-    restore();
-    return {};
+  // two loops), only a manifold is kept.
+  const auto manifold = [&] {
+    const std::vector<bool> may_bound(mesh.vertices.size(), true);
+    return find_output_defects(mesh, may_bound, oriented).empty();
+  };
+  bool all = true;
+  for (const Loop& loop : *loops) {
+    const std::optional<std::vector<Triangle>> patch = patch_of(loop);
+    if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
+    all = all && patch.has_value();
   }
-  return {loops->size(), mesh.triangles.size() - before, mesh.vertices.size() - vertices_before};
+  if (all && manifold() && same_topology(analyze_topology(mesh), input))
+    return {loops->size(), mesh.triangles.size() - before, mesh.vertices.size() - vertices_before};
+  restore();
+  // A closed input's output must be closed too (issue 18: watertight, whatever else it lost):
+  // there each hole closes whose patch leaves a manifold, even where the topology then differs
+  // (a handle the removal cut through comes out capped, where it would otherwise be a tube
+  // with two open ends). An open input's holes stay open: one may be its own boundary moved
+  // inwards, which a patch would cap.
+  if (!closed_input) return {};
+  // Each hole: its patch, or else a fan, whichever first leaves a manifold.
+  ClosedHoles closed;
+  for (const Loop& loop : *loops) {
+    const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
+    const auto closes = [&](const std::optional<std::vector<Triangle>>& patch) {
+      if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
+      if (patch && manifold()) return true;
+      mesh.triangles.resize(triangles);
+      mesh.vertices.resize(vertices);
+      return false;
+    };
+    if (closes(patch_of(loop)) || closes(fan_of(loop))) ++closed.holes;
+  }
+  closed.triangles = mesh.triangles.size() - before;
+  closed.vertices = mesh.vertices.size() - vertices_before;
+  return closed;
 }
 
 }  // namespace cvtmesh

@@ -21,12 +21,14 @@ struct ClosedHoles {
 };
 
 // A hole here is a boundary loop of `mesh` all of whose edges were shared with a triangle of
-// `removed`. Each is triangulated on its own vertices (CGAL's hole filling: Liepa's minimum of
-// the largest dihedral angle, then of the area, with the kept neighbours' dihedrals counted),
-// or, where that would use an edge the mesh has already, by a fan around a new vertex at
-// `onto_surface` of the loop's centroid. The triangles are kept only when every hole is closed
-// and the result is a manifold (oriented when `oriented`) with the topology of `input`;
-// otherwise `mesh` is left as it was and nothing is reported.
+// `removed`; for a closed `input`, any boundary loop. Each is triangulated on its own vertices
+// (CGAL's hole filling: Liepa's minimum of the largest dihedral angle, then of the area, with the
+// kept neighbours' dihedrals counted), or, where that would use an edge the mesh has already, by
+// a fan around a new vertex at `onto_surface` of the loop's centroid. The triangles are kept when
+// every hole is closed and the result is a manifold (oriented when `oriented`) with the topology
+// of `input`. Otherwise, for a closed input, each hole whose patch leaves a manifold is closed,
+// whatever the topology then (the output of a closed input is closed); for an open one, `mesh`
+// is left as it was and nothing is reported.
 ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> removed,
                                const TopologyReport& input, bool oriented,
                                const std::function<Vec3(const Vec3&)>& onto_surface);

@@ -1,7 +1,8 @@
 // The guaranteed last step of topology control (issue 18 item 1), whole: the triangles at the
 // defects the rounds left go (make_manifold), and the holes that opens are closed again where
-// that gives back the input's topology (close_opened_holes). Topology control also tries it on
-// each round's output, to keep the best round this step rescues.
+// that gives back the input's topology; a closed input's holes close anyway, each where that
+// leaves a manifold (close_opened_holes). Topology control also tries it on each round's
+// output, to keep the best round this step rescues.
 #pragma once
 
 #include <cstddef>

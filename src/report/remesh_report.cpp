@@ -113,10 +113,10 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         "tips\n",
         r.mend_rounds, r.islands_seeded, r.seeds_refined, r.links_mended, r.links_flipped,
         r.tips_closed);
-  if (r.triangles_removed > 0)
+  if (r.triangles_removed > 0 || r.holes_closed > 0)
     text += fmt::format(
-        "  last step {} triangles removed at defects the rounds left; {} holes this opened "
-        "closed again with {} triangles and {} new vertices\n",
+        "  last step {} triangles removed at defects the rounds left; {} holes closed with {} "
+        "triangles and {} new vertices\n",
         r.triangles_removed, r.holes_closed, r.triangles_closing_holes, r.vertices_closing_holes);
   return report;
 }
