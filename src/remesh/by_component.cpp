@@ -35,65 +35,31 @@ struct Component {
   double area = 0;
 };
 
-// Where two sheets of one component touch at a vertex (its triangles form several fans, joined
-// across edges of two triangles, and no edge of three or more ends there), each fan but the first
-// gets a copy of the vertex, and every copy is a pinch: remeshed as a corner, welded again in the
-// output, as where components touch.
-void split_touching_fans(Component& part) {
-  TriangleMesh& mesh = part.mesh;
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
-  UnionFind fans(3 * mesh.triangles.size());
+// Connected components (triangles sharing an edge), ordered by their first triangle. A vertex
+// where components touch (a non-manifold vertex, as where two cones meet tip to tip) is in each
+// of them, as one of their `pinches`. So is one where sheets of a component touch (its triangles
+// in several fans, joined across edges of two triangles, and no edge of three or more there): it
+// has a copy per fan. Each pinch is remeshed as a corner, and the copies welded in the output.
+std::vector<Component> split_components(const TriangleMesh& mesh) {
+  const std::size_t triangles = mesh.triangles.size();
+  UnionFind sets(triangles), fans(3 * triangles);
   std::vector<bool> branching(mesh.vertices.size(), false);
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
   const auto corner = [&](std::size_t t, Index v) {
     const Triangle& f = mesh.triangles[t];
     return 3 * t + static_cast<std::size_t>(f[0] == v ? 0 : f[1] == v ? 1 : 2);
   };
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+    for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j)
+      sets.unite(uses[j].triangle(), uses[i].triangle());
     for (const Index v : uses[i].edge) {
       if (j - i == 2) fans.unite(corner(uses[i].triangle(), v), corner(uses[i + 1].triangle(), v));
       if (j - i > 2) branching[v] = true;
     }
-    i = j;
   }
-  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-  std::vector<std::size_t> first_fan(mesh.vertices.size(), kNone);
-  std::map<std::size_t, Index> copy_of_fan;  // fans beyond their vertex's first: the copy
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const Index v = mesh.triangles[t][k];
-      const std::size_t fan = fans.find(3 * t + static_cast<std::size_t>(k));
-      if (branching[v] || first_fan[v] == fan) continue;
-      if (first_fan[v] == kNone) {
-        first_fan[v] = fan;
-        continue;
-      }
-      const auto [at, added] = copy_of_fan.emplace(fan, static_cast<Index>(mesh.vertices.size()));
-      if (added) {
-        mesh.vertices.push_back(mesh.vertices[v]);
-        part.input_vertex.push_back(part.input_vertex[v]);
-        part.pinches.push_back(v);
-        part.pinches.push_back(at->second);
-      }
-      mesh.triangles[t][k] = at->second;
-    }
-  std::sort(part.pinches.begin(), part.pinches.end());
-  part.pinches.erase(std::unique(part.pinches.begin(), part.pinches.end()), part.pinches.end());
-}
-
-// Connected components (triangles sharing an edge), ordered by their first triangle. A vertex
-// where components touch (a non-manifold vertex, as where two cones meet tip to tip) is in each
-// of them, as one of their `pinches`; so is each copy of one where sheets of a component touch
-// (split_touching_fans).
-std::vector<Component> split_components(const TriangleMesh& mesh) {
-  UnionFind sets(mesh.triangles.size());
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
-  for (std::size_t k = 1; k < uses.size(); ++k)
-    if (uses[k].edge == uses[k - 1].edge) sets.unite(uses[k].triangle(), uses[k - 1].triangle());
-  std::vector<Index> component_of_root(mesh.triangles.size(), kNoIndex);
+  std::vector<Index> component_of_root(triangles, kNoIndex);
   std::vector<std::vector<Index>> triangles_of;  // per component, in input order
-  for (Index t = 0; t < mesh.triangles.size(); ++t) {
+  for (Index t = 0; t < triangles; ++t) {
     Index& c = component_of_root[sets.find(t)];
     if (c == kNoIndex) {
       c = static_cast<Index>(triangles_of.size());
@@ -102,23 +68,27 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
     triangles_of[c].push_back(t);
   }
   std::vector<Component> parts(triangles_of.size());
+  // A vertex's id in a part: per fan (a fan lies in one component), or, at the end of an edge of
+  // three or more triangles, per component.
+  std::vector<Index> fan_local(3 * triangles, kNoIndex);
   std::vector<Index> owner(mesh.vertices.size(), kNoIndex);  // the last component that has it
   std::vector<Index> local(mesh.vertices.size());            // and its id there
-  std::vector<Index> components_at(mesh.vertices.size(), 0);
+  std::vector<Index> copies(mesh.vertices.size(), 0);
   for (Index c = 0; c < parts.size(); ++c) {
     Component& part = parts[c];
     for (const Index t : triangles_of[c]) {
       Triangle mapped;
       for (int k = 0; k < 3; ++k) {
         const Index v = mesh.triangles[t][k];
-        if (owner[v] != c) {
+        Index& id = branching[v] ? local[v] : fan_local[fans.find(3 * t + k)];
+        if (branching[v] ? owner[v] != c : id == kNoIndex) {
           owner[v] = c;
-          ++components_at[v];
-          local[v] = static_cast<Index>(part.input_vertex.size());
+          ++copies[v];
+          id = static_cast<Index>(part.input_vertex.size());
           part.input_vertex.push_back(v);
           part.mesh.vertices.push_back(mesh.vertices[v]);
         }
-        mapped[k] = local[v];
+        mapped[k] = id;
       }
       part.mesh.triangles.push_back(mapped);
     }
@@ -126,8 +96,7 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
   for (Component& part : parts) {
     part.area = surface_area(part.mesh);
     for (Index v = 0; v < part.input_vertex.size(); ++v)
-      if (components_at[part.input_vertex[v]] > 1) part.pinches.push_back(v);
-    split_touching_fans(part);
+      if (copies[part.input_vertex[v]] > 1) part.pinches.push_back(v);
   }
   return parts;
 }
