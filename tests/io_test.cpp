@@ -63,6 +63,23 @@ TEST(ReadMesh, ObjPolygonsWithTextureAndNormalIndicesAreTriangulated) {
   EXPECT_EQ(m.triangles[2], (Triangle{1, 4, 2}));
 }
 
+// Two quads folded along two shared edges (a roof ridge a-b-c): fanned from their first corners
+// both give triangle a-b-c, a fin on edge a-c (beast.obj of a public test set); fanned around b
+// instead, the surface is a closed manifold.
+TEST(ReadMesh, QuadsFoldedAlongTwoEdgesAreSplitWithoutATriangleTwice) {
+  TempDir dir;
+  write_file(dir / "roof.off",
+             "OFF\n6 6 0\n-1 0 0\n0 0 1\n1 0 0\n0 1 0\n0 -1 0\n0 0 -1\n"
+             "4 0 1 2 3\n4 2 1 0 4\n3 3 2 5\n3 0 3 5\n3 4 0 5\n3 2 4 5\n");
+  ReadReport report;
+  const TriangleMesh m = read_mesh(dir / "roof.off", &report);
+  EXPECT_EQ(report.polygons_split, 2u);
+  ASSERT_EQ(m.triangles.size(), 8u);
+  const TopologyReport t = analyze_topology(m);
+  EXPECT_TRUE(t.is_manifold() && t.is_closed() && t.consistently_oriented);
+  EXPECT_EQ(t.euler_characteristic, 2);
+}
+
 const char* kPlyHeader =
     "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
     "element face 2\nproperty list uchar int vertex_indices\nend_header\n";

@@ -5,6 +5,8 @@
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/STL.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -179,6 +182,50 @@ std::string find_non_finite_token(const std::filesystem::path& path) {
   return "";
 }
 
+// The triangles of `poly` as a fan around its corner `apex`.
+void fan(const Polygon& poly, std::size_t apex, std::vector<Triangle>& out) {
+  const std::size_t n = poly.size();
+  for (std::size_t k = 1; k + 1 < n; ++k)
+    out.push_back({static_cast<Index>(poly[apex]), static_cast<Index>(poly[(apex + k) % n]),
+                   static_cast<Index>(poly[(apex + k + 1) % n])});
+}
+
+// A triangle's corners, sorted: the same for a triangle and its copy, either way round.
+std::array<Index, 3> corners_of(Triangle t) {
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// Where a polygon's fan makes a triangle another face has too (two quads folded along two
+// shared edges: fanned from the same corner, both give the triangle of those edges, once either
+// way round, a fin on an edge of three triangles, beast.obj of a public test set), the polygon
+// is fanned around its next corner that makes none, if one does.
+void refan_duplicates(const std::vector<Polygon>& polygons, const std::vector<std::size_t>& first,
+                      std::vector<Triangle>& triangles) {
+  std::map<std::array<Index, 3>, int> count;
+  for (const Triangle& t : triangles) ++count[corners_of(t)];
+  std::vector<Triangle> again;
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    const Polygon& poly = polygons[p];
+    if (poly.size() < 4) continue;
+    const auto own = triangles.begin() + static_cast<std::ptrdiff_t>(first[p]);
+    const auto end = own + static_cast<std::ptrdiff_t>(poly.size() - 2);
+    const auto shared = [&](const Triangle& t) { return count[corners_of(t)] > 1; };
+    if (std::none_of(own, end, shared)) continue;
+    for (auto t = own; t != end; ++t) --count[corners_of(*t)];
+    for (std::size_t apex = 1; apex < poly.size(); ++apex) {
+      again.clear();
+      fan(poly, apex, again);
+      if (std::none_of(again.begin(), again.end(),
+                       [&](const Triangle& t) { return count[corners_of(t)] > 0; })) {
+        std::copy(again.begin(), again.end(), own);
+        break;
+      }
+    }
+    for (auto t = own; t != end; ++t) ++count[corners_of(*t)];
+  }
+}
+
 TriangleMesh triangulate(const std::filesystem::path& path, PolygonSoup& soup, ReadReport& report) {
   if (soup.points.size() > std::numeric_limits<Index>::max())
     input_problem(path, "too many vertices (" + std::to_string(soup.points.size()) + ")");
@@ -187,13 +234,15 @@ TriangleMesh triangulate(const std::filesystem::path& path, PolygonSoup& soup, R
   for (const auto& [x, y, z] : soup.points) mesh.vertices.push_back({x, y, z});
   report.polygons_in_file = soup.polygons.size();
   mesh.triangles.reserve(soup.polygons.size());
+  std::vector<std::size_t> first;  // per polygon, its first triangle
+  first.reserve(soup.polygons.size());
   for (const Polygon& poly : soup.polygons) {
     // Fan split: exact for triangles and convex polygons, the common case in mesh files.
     if (poly.size() > 3) ++report.polygons_split;
-    for (std::size_t k = 1; k + 1 < poly.size(); ++k)
-      mesh.triangles.push_back({static_cast<Index>(poly[0]), static_cast<Index>(poly[k]),
-                                static_cast<Index>(poly[k + 1])});
+    first.push_back(mesh.triangles.size());
+    fan(poly, 0, mesh.triangles);
   }
+  if (report.polygons_split > 0) refan_duplicates(soup.polygons, first, mesh.triangles);
   return mesh;
 }
 
