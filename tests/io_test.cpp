@@ -48,13 +48,20 @@ TEST(ReadMesh, ExtensionIsCaseInsensitive) {
   EXPECT_EQ(read_mesh(dir / "a.OFF").triangles.size(), 20u);
 }
 
-TEST(ReadMesh, ObjPolygonsWithTextureAndNormalIndicesAreTriangulated) {
+// `text` written to a file `name`, and read.
+TriangleMesh read_text(const std::string& name, const std::string& text, ReadReport& report) {
   TempDir dir;
-  write_file(dir / "quad.obj",
-             "# a quad and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
-             "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf 2//1 5//1 3//1\n");
+  write_file(dir / name, text);
+  return read_mesh(dir / name, &report);
+}
+
+TEST(ReadMesh, ObjPolygonsWithTextureAndNormalIndicesAreTriangulated) {
   ReadReport report;
-  const TriangleMesh m = read_mesh(dir / "quad.obj", &report);
+  const TriangleMesh m =
+      read_text("quad.obj",
+                "# a quad and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+                "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf 2//1 5//1 3//1\n",
+                report);
   EXPECT_EQ(report.polygons_in_file, 2u);
   EXPECT_EQ(report.polygons_split, 1u);
   ASSERT_EQ(m.triangles.size(), 3u);
@@ -67,12 +74,11 @@ TEST(ReadMesh, ObjPolygonsWithTextureAndNormalIndicesAreTriangulated) {
 // both give triangle a-b-c, a fin on edge a-c (beast.obj of a public test set); fanned around b
 // instead, the surface is a closed manifold.
 TEST(ReadMesh, QuadsFoldedAlongTwoEdgesAreSplitWithoutATriangleTwice) {
-  TempDir dir;
-  write_file(dir / "roof.off",
-             "OFF\n6 6 0\n-1 0 0\n0 0 1\n1 0 0\n0 1 0\n0 -1 0\n0 0 -1\n"
-             "4 0 1 2 3\n4 2 1 0 4\n3 3 2 5\n3 0 3 5\n3 4 0 5\n3 2 4 5\n");
   ReadReport report;
-  const TriangleMesh m = read_mesh(dir / "roof.off", &report);
+  const TriangleMesh m = read_text("roof.off",
+                                   "OFF\n6 6 0\n-1 0 0\n0 0 1\n1 0 0\n0 1 0\n0 -1 0\n0 0 -1\n"
+                                   "4 0 1 2 3\n4 2 1 0 4\n3 3 2 5\n3 0 3 5\n3 4 0 5\n3 2 4 5\n",
+                                   report);
   EXPECT_EQ(report.polygons_split, 2u);
   ASSERT_EQ(m.triangles.size(), 8u);
   const TopologyReport t = analyze_topology(m);
