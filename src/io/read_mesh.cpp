@@ -199,30 +199,39 @@ std::array<Index, 3> corners_of(Triangle t) {
 // Where a polygon's fan makes a triangle another face has too (two quads folded along two
 // shared edges: fanned from the same corner, both give the triangle of those edges, once either
 // way round, a fin on an edge of three triangles, beast.obj of a public test set), the polygon
-// is fanned around its next corner that makes none, if one does.
+// is fanned around its next corner that makes none, if one does. The triangles' corners are
+// sorted once (a map of them all cost a large quad mesh twice its memory); the few fans made
+// again are counted apart.
 void refan_duplicates(const std::vector<Polygon>& polygons, const std::vector<std::size_t>& first,
                       std::vector<Triangle>& triangles) {
-  std::map<std::array<Index, 3>, int> count;
-  for (const Triangle& t : triangles) ++count[corners_of(t)];
+  std::vector<std::array<Index, 3>> sorted(triangles.size());
+  std::transform(triangles.begin(), triangles.end(), sorted.begin(), corners_of);
+  std::sort(sorted.begin(), sorted.end());
+  std::map<std::array<Index, 3>, std::ptrdiff_t> since;  // changes to the counts, by refans
+  const auto count = [&](const Triangle& t) {
+    const std::array<Index, 3> key = corners_of(t);
+    const auto [from, to] = std::equal_range(sorted.begin(), sorted.end(), key);
+    const auto change = since.find(key);
+    return (to - from) + (change == since.end() ? 0 : change->second);
+  };
   std::vector<Triangle> again;
   for (std::size_t p = 0; p < polygons.size(); ++p) {
     const Polygon& poly = polygons[p];
     if (poly.size() < 4) continue;
     const auto own = triangles.begin() + static_cast<std::ptrdiff_t>(first[p]);
     const auto end = own + static_cast<std::ptrdiff_t>(poly.size() - 2);
-    const auto shared = [&](const Triangle& t) { return count[corners_of(t)] > 1; };
-    if (std::none_of(own, end, shared)) continue;
-    for (auto t = own; t != end; ++t) --count[corners_of(*t)];
+    if (std::none_of(own, end, [&](const Triangle& t) { return count(t) > 1; })) continue;
+    for (auto t = own; t != end; ++t) --since[corners_of(*t)];
     for (std::size_t apex = 1; apex < poly.size(); ++apex) {
       again.clear();
       fan(poly, apex, again);
       if (std::none_of(again.begin(), again.end(),
-                       [&](const Triangle& t) { return count[corners_of(t)] > 0; })) {
+                       [&](const Triangle& t) { return count(t) > 0; })) {
         std::copy(again.begin(), again.end(), own);
         break;
       }
     }
-    for (auto t = own; t != end; ++t) ++count[corners_of(*t)];
+    for (auto t = own; t != end; ++t) ++since[corners_of(*t)];
   }
 }
 
