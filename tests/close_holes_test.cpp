@@ -116,6 +116,27 @@ TEST(CloseOpenedHoles, AClosedInputsHoleClosesThoughNothingWasRemovedThere) {
   EXPECT_TRUE(same_topology(analyze_topology(sphere), input));
 }
 
+// A lone triangle the removal cut off closes only with its own copy, which repair drops again: a
+// closed input's output loses it instead (man.off stretched at 2k had five, each a boundary loop).
+TEST(CloseOpenedHoles, AClosedInputsLoneTriangleGoes) {
+  TriangleMesh sphere = icosphere(3);
+  const TopologyReport input = analyze_topology(sphere);
+  const Triangle lone = sphere.triangles[0];
+  const std::vector<Triangle> removed = remove_triangles(sphere, [&](const Triangle& t) {
+    return t != lone && std::any_of(t.begin(), t.end(), [&](Index v) {
+             return std::find(lone.begin(), lone.end(), v) != lone.end();
+           });
+  });
+  ASSERT_EQ(analyze_topology(sphere).components, 2u);
+  const ClosedHoles closed = close_opened_holes(sphere, removed, input, true, kNoProjection);
+  EXPECT_EQ(closed.lone_triangles, 1u);
+  EXPECT_EQ(closed.holes, 1u);
+  EXPECT_EQ(std::count(sphere.triangles.begin(), sphere.triangles.end(), lone), 0);
+  const TopologyReport t = analyze_topology(sphere);
+  EXPECT_TRUE(t.is_manifold() && t.is_closed());
+  EXPECT_EQ(t.components, 1u);
+}
+
 TEST(CloseOpenedHoles, AnOpenInputsHolesStayOpenWhenClosingWouldNotGiveTheTopologyBack) {
   // A band cut out of a cup (the lower half of a sphere) leaves a cap and a ring, each with an
   // opened loop; closing both would make two components of the cup's one.

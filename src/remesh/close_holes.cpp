@@ -4,6 +4,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -67,6 +68,14 @@ std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
     if (all_opened || every) loops.push_back(std::move(loop));
   }
   return loops;
+}
+
+// Whether `t` has the three vertices of `loop` (of three).
+bool same_corners(Triangle t, const Loop& loop) {
+  std::array<Index, 3> v{loop.vertices[0], loop.vertices[1], loop.vertices[2]};
+  std::sort(t.begin(), t.end());
+  std::sort(v.begin(), v.end());
+  return t == v;
 }
 
 // The triangles closing `loop`, or nothing when CGAL finds no complete triangulation (a loop
@@ -168,6 +177,17 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   // Each hole: its patch, or else a fan, whichever first leaves a manifold.
   ClosedHoles closed;
   for (const Loop& loop : *loops) {
+    // A lone triangle (the removal cut it off) closes only with its own copy, which repair
+    // drops again: it goes instead.
+    const auto lone = loop.vertices.size() != 3
+                          ? mesh.triangles.end()
+                          : std::find_if(mesh.triangles.begin(), mesh.triangles.end(),
+                                         [&](const Triangle& t) { return same_corners(t, loop); });
+    if (lone != mesh.triangles.end()) {
+      mesh.triangles.erase(lone);
+      ++closed.lone_triangles;
+      continue;
+    }
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
     const auto closes = [&](const std::optional<std::vector<Triangle>>& patch) {
       if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
@@ -178,7 +198,7 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
     };
     if (closes(patch_of(loop)) || closes(fan_of(loop))) ++closed.holes;
   }
-  closed.triangles = mesh.triangles.size() - before;
+  closed.triangles = mesh.triangles.size() + closed.lone_triangles - before;
   closed.vertices = mesh.vertices.size() - vertices_before;
   return closed;
 }

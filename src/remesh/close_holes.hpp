@@ -17,7 +17,8 @@ namespace cvtmesh {
 
 struct ClosedHoles {
   std::size_t holes = 0, triangles = 0;
-  std::size_t vertices = 0;  // added at the centres of holes closed by a fan
+  std::size_t vertices = 0;        // added at the centres of holes closed by a fan
+  std::size_t lone_triangles = 0;  // of a closed input's output, removed (see below)
 };
 
 // A hole here is a boundary loop of `mesh` all of whose edges were shared with a triangle of
@@ -27,8 +28,9 @@ struct ClosedHoles {
 // a fan around a new vertex at `onto_surface` of the loop's centroid. The triangles are kept when
 // every hole is closed and the result is a manifold (oriented when `oriented`) with the topology
 // of `input`. Otherwise, for a closed input, each hole whose patch leaves a manifold is closed,
-// whatever the topology then (the output of a closed input is closed); for an open one, `mesh`
-// is left as it was and nothing is reported.
+// whatever the topology then (the output of a closed input is closed), and a lone triangle, which
+// only its own copy would close, is removed; for an open one, `mesh` is left as it was and
+// nothing is reported.
 ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> removed,
                                const TopologyReport& input, bool oriented,
                                const std::function<Vec3(const Vec3&)>& onto_surface);

@@ -16,6 +16,7 @@ LastStep finish_manifold(TriangleMesh& mesh, const TopologyReport& input,
   if (!removed.empty() || (input.is_closed() && !analyze_topology(mesh).is_closed()))
     step.closed = close_opened_holes(mesh, removed, input, input.orientable,
                                      [&](const Vec3& p) { return surface.nearest(p).point; });
+  step.triangles_removed += step.closed.lone_triangles;
   return step;
 }
 
