@@ -159,35 +159,60 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
     const std::vector<bool> may_bound(mesh.vertices.size(), true);
     return find_output_defects(mesh, may_bound, oriented).empty();
   };
+  // A lone triangle (the removal cut it off) closes only with its own copy, which repair drops
+  // again: a closed input's output loses it instead (below).
+  std::vector<bool> lone(loops->size(), false);
+  for (std::size_t k = 0; k < loops->size(); ++k)
+    lone[k] = (*loops)[k].vertices.size() == 3 &&
+              std::any_of(mesh.triangles.begin(), mesh.triangles.end(),
+                          [&](const Triangle& t) { return same_corners(t, (*loops)[k]); });
+  const bool any_lone = std::find(lone.begin(), lone.end(), true) != lone.end();
   bool all = true;
   for (const Loop& loop : *loops) {
     const std::optional<std::vector<Triangle>> patch = patch_of(loop);
     if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
     all = all && patch.has_value();
   }
-  if (all && manifold() && same_topology(analyze_topology(mesh), input))
-    return {loops->size(), mesh.triangles.size() - before, mesh.vertices.size() - vertices_before};
-  restore();
   // A closed input's output must be closed too (issue 18: watertight, whatever else it lost):
   // there each hole closes whose patch leaves a manifold, even where the topology then differs
   // (a handle the removal cut through comes out capped, where it would otherwise be a tube
   // with two open ends). An open input's holes stay open: one may be its own boundary moved
   // inwards, which a patch would cap.
+  if (all && manifold() &&
+      ((closed_input && !any_lone) || same_topology(analyze_topology(mesh), input)))
+    return {loops->size(), mesh.triangles.size() - before, mesh.vertices.size() - vertices_before};
+  restore();
   if (!closed_input) return {};
-  // Each hole: its patch, or else a fan, whichever first leaves a manifold.
   ClosedHoles closed;
-  for (const Loop& loop : *loops) {
-    // A lone triangle (the removal cut it off) closes only with its own copy, which repair
-    // drops again: it goes instead.
-    const auto lone = loop.vertices.size() != 3
-                          ? mesh.triangles.end()
-                          : std::find_if(mesh.triangles.begin(), mesh.triangles.end(),
-                                         [&](const Triangle& t) { return same_corners(t, loop); });
-    if (lone != mesh.triangles.end()) {
-      mesh.triangles.erase(lone);
-      ++closed.lone_triangles;
+  std::vector<const Loop*> open;
+  for (std::size_t k = 0; k < loops->size(); ++k) {
+    if (!lone[k]) {
+      open.push_back(&(*loops)[k]);
       continue;
     }
+    mesh.triangles.erase(
+        std::find_if(mesh.triangles.begin(), mesh.triangles.end(),
+                     [&](const Triangle& t) { return same_corners(t, (*loops)[k]); }));
+    ++closed.lone_triangles;
+  }
+  // The other holes' patches at once, as that nearly always leaves a manifold (one check, not one
+  // a hole: topology control tries this step on each round's output); else each hole its patch,
+  // or else a fan, whichever first leaves a manifold.
+  const std::size_t kept = mesh.triangles.size();
+  bool all_patched = true;
+  for (const Loop* loop : open) {
+    const std::optional<std::vector<Triangle>> patch = patch_of(*loop);
+    if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
+    all_patched = all_patched && patch.has_value();
+  }
+  if (all_patched && manifold()) {
+    closed.holes = open.size();
+    open.clear();
+  } else {
+    mesh.triangles.resize(kept);
+    mesh.vertices.resize(vertices_before);
+  }
+  for (const Loop* loop : open) {
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
     const auto closes = [&](const std::optional<std::vector<Triangle>>& patch) {
       if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
@@ -196,7 +221,7 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
       mesh.vertices.resize(vertices);
       return false;
     };
-    if (closes(patch_of(loop)) || closes(fan_of(loop))) ++closed.holes;
+    if (closes(patch_of(*loop)) || closes(fan_of(*loop))) ++closed.holes;
   }
   closed.triangles = mesh.triangles.size() + closed.lone_triangles - before;
   closed.vertices = mesh.vertices.size() - vertices_before;
