@@ -4,7 +4,6 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 
 #include <algorithm>
-#include <array>
 #include <optional>
 #include <vector>
 
@@ -68,14 +67,6 @@ std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
     if (all_opened || every) loops.push_back(std::move(loop));
   }
   return loops;
-}
-
-// Whether `t` has the three vertices of `loop` (of three).
-bool same_corners(Triangle t, const Loop& loop) {
-  std::array<Index, 3> v{loop.vertices[0], loop.vertices[1], loop.vertices[2]};
-  std::sort(t.begin(), t.end());
-  std::sort(v.begin(), v.end());
-  return t == v;
 }
 
 // The triangles closing `loop`, or nothing when CGAL finds no complete triangulation (a loop
@@ -160,13 +151,12 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
     return find_output_defects(mesh, may_bound, oriented).empty();
   };
   // A lone triangle (the removal cut it off) closes only with its own copy, which repair drops
-  // again: a closed input's output loses it instead (below).
-  std::vector<bool> lone(loops->size(), false);
-  for (std::size_t k = 0; k < loops->size(); ++k)
-    lone[k] = (*loops)[k].vertices.size() == 3 &&
-              std::any_of(mesh.triangles.begin(), mesh.triangles.end(),
-                          [&](const Triangle& t) { return same_corners(t, (*loops)[k]); });
-  const bool any_lone = std::find(lone.begin(), lone.end(), true) != lone.end();
+  // again: a closed input's output loses it instead (below). Its loop is its own three edges,
+  // so the triangle on the loop's first edge has the loop's third vertex.
+  const auto lone = [](const Loop& loop) {
+    return loop.vertices.size() == 3 && loop.opposite[0] == loop.vertices[2];
+  };
+  const bool any_lone = std::any_of(loops->begin(), loops->end(), lone);
   bool all = true;
   for (const Loop& loop : *loops) {
     const std::optional<std::vector<Triangle>> patch = patch_of(loop);
@@ -185,15 +175,23 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   if (!closed_input) return {};
   ClosedHoles closed;
   std::vector<const Loop*> open;
-  for (std::size_t k = 0; k < loops->size(); ++k) {
-    if (!lone[k]) {
-      open.push_back(&(*loops)[k]);
+  std::vector<bool> dropped(mesh.triangles.size(), false);
+  for (const Loop& loop : *loops) {
+    if (!lone(loop)) {
+      open.push_back(&loop);
       continue;
     }
-    mesh.triangles.erase(
-        std::find_if(mesh.triangles.begin(), mesh.triangles.end(),
-                     [&](const Triangle& t) { return same_corners(t, (*loops)[k]); }));
+    const Edge first = edge_of(loop.vertices[0], loop.vertices[1]);  // of one triangle: a boundary
+    dropped[std::lower_bound(uses.begin(), uses.end(), first, [](const EdgeUse& u, const Edge& e) {
+              return u.edge < e;
+            })->triangle()] = true;
     ++closed.lone_triangles;
+  }
+  if (closed.lone_triangles > 0) {
+    std::vector<Triangle> kept_triangles;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      if (!dropped[t]) kept_triangles.push_back(mesh.triangles[t]);
+    mesh.triangles = std::move(kept_triangles);
   }
   // The other holes' patches at once, as that nearly always leaves a manifold (one check, not one
   // a hole: topology control tries this step on each round's output); else each hole its patch,
