@@ -202,8 +202,7 @@ std::array<Index, 3> corners_of(Triangle t) {
 // is fanned around its next corner that makes none, if one does. The triangles' corners are
 // sorted once (a map of them all cost a large quad mesh twice its memory); the few fans made
 // again are counted apart.
-void refan_duplicates(const std::vector<Polygon>& polygons, const std::vector<std::size_t>& first,
-                      std::vector<Triangle>& triangles) {
+void refan_duplicates(const std::vector<Polygon>& polygons, std::vector<Triangle>& triangles) {
   std::vector<std::array<Index, 3>> sorted(triangles.size());
   std::transform(triangles.begin(), triangles.end(), sorted.begin(), corners_of);
   std::sort(sorted.begin(), sorted.end());
@@ -215,11 +214,11 @@ void refan_duplicates(const std::vector<Polygon>& polygons, const std::vector<st
     return (to - from) + (change == since.end() ? 0 : change->second);
   };
   std::vector<Triangle> again;
-  for (std::size_t p = 0; p < polygons.size(); ++p) {
-    const Polygon& poly = polygons[p];
+  auto end = triangles.begin();  // past the last polygon's fan: each has its corners less two
+  for (const Polygon& poly : polygons) {
+    const auto own = end;
+    end += static_cast<std::ptrdiff_t>(poly.size() - 2);  // read_mesh refuses shorter faces
     if (poly.size() < 4) continue;
-    const auto own = triangles.begin() + static_cast<std::ptrdiff_t>(first[p]);
-    const auto end = own + static_cast<std::ptrdiff_t>(poly.size() - 2);
     if (std::none_of(own, end, [&](const Triangle& t) { return count(t) > 1; })) continue;
     for (auto t = own; t != end; ++t) --since[corners_of(*t)];
     for (std::size_t apex = 1; apex < poly.size(); ++apex) {
@@ -243,15 +242,12 @@ TriangleMesh triangulate(const std::filesystem::path& path, PolygonSoup& soup, R
   for (const auto& [x, y, z] : soup.points) mesh.vertices.push_back({x, y, z});
   report.polygons_in_file = soup.polygons.size();
   mesh.triangles.reserve(soup.polygons.size());
-  std::vector<std::size_t> first;  // per polygon, its first triangle
-  first.reserve(soup.polygons.size());
   for (const Polygon& poly : soup.polygons) {
     // Fan split: exact for triangles and convex polygons, the common case in mesh files.
     if (poly.size() > 3) ++report.polygons_split;
-    first.push_back(mesh.triangles.size());
     fan(poly, 0, mesh.triangles);
   }
-  if (report.polygons_split > 0) refan_duplicates(soup.polygons, first, mesh.triangles);
+  if (report.polygons_split > 0) refan_duplicates(soup.polygons, mesh.triangles);
   return mesh;
 }
 

@@ -157,12 +157,17 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
     return loop.vertices.size() == 3 && loop.opposite[0] == loop.vertices[2];
   };
   const bool any_lone = std::any_of(loops->begin(), loops->end(), lone);
-  bool all = true;
-  for (const Loop& loop : *loops) {
-    const std::optional<std::vector<Triangle>> patch = patch_of(loop);
-    if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
-    all = all && patch.has_value();
-  }
+  // Adds the patches of `these` loops; whether each had one.
+  const auto patch_all = [&](const auto& these) {
+    bool all = true;
+    for (const Loop& loop : these) {
+      const std::optional<std::vector<Triangle>> patch = patch_of(loop);
+      if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
+      all = all && patch.has_value();
+    }
+    return all;
+  };
+  const bool all = patch_all(*loops);
   // A closed input's output must be closed too (issue 18: watertight, whatever else it lost):
   // there each hole closes whose patch leaves a manifold, even where the topology then differs
   // (a handle the removal cut through comes out capped, where it would otherwise be a tube
@@ -174,11 +179,11 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   restore();
   if (!closed_input) return {};
   ClosedHoles closed;
-  std::vector<const Loop*> open;
+  std::vector<Loop> open;
   std::vector<bool> dropped(mesh.triangles.size(), false);
   for (const Loop& loop : *loops) {
     if (!lone(loop)) {
-      open.push_back(&loop);
+      open.push_back(loop);
       continue;
     }
     const Edge first = edge_of(loop.vertices[0], loop.vertices[1]);  // of one triangle: a boundary
@@ -197,20 +202,14 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   // a hole: topology control tries this step on each round's output); else each hole its patch,
   // or else a fan, whichever first leaves a manifold.
   const std::size_t kept = mesh.triangles.size();
-  bool all_patched = true;
-  for (const Loop* loop : open) {
-    const std::optional<std::vector<Triangle>> patch = patch_of(*loop);
-    if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
-    all_patched = all_patched && patch.has_value();
-  }
-  if (all_patched && manifold()) {
+  if (patch_all(open) && manifold()) {
     closed.holes = open.size();
     open.clear();
   } else {
     mesh.triangles.resize(kept);
     mesh.vertices.resize(vertices_before);
   }
-  for (const Loop* loop : open) {
+  for (const Loop& loop : open) {
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
     const auto closes = [&](const std::optional<std::vector<Triangle>>& patch) {
       if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
@@ -219,7 +218,7 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
       mesh.vertices.resize(vertices);
       return false;
     };
-    if (closes(patch_of(*loop)) || closes(fan_of(*loop))) ++closed.holes;
+    if (closes(patch_of(loop)) || closes(fan_of(loop))) ++closed.holes;
   }
   closed.triangles = mesh.triangles.size() + closed.lone_triangles - before;
   closed.vertices = mesh.vertices.size() - vertices_before;
