@@ -53,10 +53,14 @@ double angle_deg(const Vec3& u, const Vec3& v) {
 
 CreaseScale::CreaseScale(const TriangleMesh& mesh, const std::vector<EdgeUse>& uses,
                          const std::vector<Edge>& barrier)
-    : mesh_(mesh), uses_(uses), across_(3 * mesh.triangles.size(), kNone) {
+    : mesh_(mesh),
+      uses_(uses),
+      across_(3 * mesh.triangles.size(), kNone),
+      on_boundary_(3 * mesh.triangles.size(), 0) {
   for (std::size_t k = 0; k < uses.size();) {
     std::size_t end = k;
     while (end < uses.size() && uses[end].edge == uses[k].edge) ++end;
+    if (end - k == 1) on_boundary_[uses[k].corner] = 1;
     if (end - k == 2 && !std::binary_search(barrier.begin(), barrier.end(), uses[k].edge)) {
       across_[uses[k].corner] = uses[k + 1].corner / 3;
       across_[uses[k + 1].corner] = uses[k].corner / 3;
@@ -149,7 +153,7 @@ double CreaseScale::side_width(std::size_t first, const Vec3& a, const Vec3& b,
   // near the crease however wide the face.
   const Vec3 centre = 0.5 * (a + b), along = b - a;
   const double length = norm(along);
-  double width = 0;
+  double width = 0, gap = std::numeric_limits<double>::infinity();
   std::vector<std::size_t> stack{first};
   std::unordered_set<std::size_t> seen{first};
   while (!stack.empty()) {
@@ -158,15 +162,18 @@ double CreaseScale::side_width(std::size_t first, const Vec3& a, const Vec3& b,
     const std::array<Vec3, 3> corners = mesh_.corners(t);
     for (int k = 0; k < 3; ++k) {
       width = std::max(width, norm(cross(along, corners[k] - a)) / length);
+      const double to_edge = distance_to_segment(centre, corners[k], corners[(k + 1) % 3]);
+      // A boundary that comes close bounds the side, however far the side reaches elsewhere
+      // within the radius: the narrow ends of a strip between a crease and a hole's rim reach
+      // its wide middle (lion.off at 5k: a scan's lip, 0.1-0.5 edge lengths from the rim).
+      if (on_boundary_[3 * t + k]) gap = std::min(gap, to_edge);
       const std::size_t u = across(t, k);
-      if (u == kNone || seen.contains(u) ||
-          distance_to_segment(centre, corners[k], corners[(k + 1) % 3]) > radius)
-        continue;
+      if (u == kNone || seen.contains(u) || to_edge > radius) continue;
       seen.insert(u);
       stack.push_back(u);
     }
   }
-  return width;
+  return std::min(width, gap);
 }
 
 CreaseScale::Measure CreaseScale::measure(const Edge& edge, double radius) const {

@@ -26,7 +26,8 @@ class CreaseScale {
   // side (reached across non-barrier edges): the angle between the two sides' area-weighted
   // normals (the fold seen at that scale), and the sides' roughness, the larger of their
   // area-weighted mean angles between a triangle's normal and its side's normal. Degrees. And
-  // the narrower side's width: how far its triangles' corners reach from the edge's line.
+  // the narrower side's width: how far its triangles' corners reach from the edge's line, or
+  // less where a boundary comes nearer.
   struct Measure {
     double fold_deg = 0;
     double roughness_deg = 0;
@@ -59,7 +60,8 @@ class CreaseScale {
   };
   Side side(std::size_t first, bool flip, const Vec3& centre, double radius) const;
   // How far from the line through a and b the surface on first's side reaches, within `radius`
-  // of their midpoint (the side ends at the barrier: another crease).
+  // of their midpoint (the side ends at the barrier: another crease), or how near a boundary
+  // edge of the side comes to the midpoint, whichever is less.
   double side_width(std::size_t first, const Vec3& a, const Vec3& b, double radius) const;
   // The triangle across t's edge k = (t[k], t[k+1]), or none for an edge of other than two
   // triangles or on the barrier.
@@ -71,6 +73,7 @@ class CreaseScale {
   const TriangleMesh& mesh_;
   const std::vector<EdgeUse>& uses_;
   std::vector<std::size_t> across_;
+  std::vector<char> on_boundary_;  // per corner 3 t + k: edge k of t is a boundary edge
   std::vector<std::size_t> around_start_, around_;  // per vertex, its triangles (compressed)
 };
 
