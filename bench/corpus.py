@@ -15,7 +15,9 @@ Runs are independent processes, J at a time (default: the core count), each sing
 in cvtmesh (--threads 1) so that J runs do not fight over the cores; vorpalite likewise gets
 sys:max_threads=1. Times are wall seconds of the whole default command (cvtmesh's includes its
 report); both outputs' Hausdorff distances are then measured by the same `cvtmesh quality --ref`.
-Peak memory is the process's maximum resident set (getrusage of the child).
+Peak memory is the process's maximum resident set (getrusage of the child). The totals include
+the time topology control adds to the rest of each remesh (its report's timings), median and
+worst five.
 """
 
 import argparse
@@ -111,6 +113,10 @@ def run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff):
             "theta_min_away": j.get("angle_min_away_deg"), "q_min_away": j.get("q_min_away"),
             "feature_max": j.get("feature_hausdorff_max_pct"),
             "corners": f'{j.get("corners_out", 0)}/{j.get("corners_in", 0)}',
+            # What topology control adds to the rest of the remesh (issue 18: at most 25% at
+            # the median).
+            "topology_added": j["timings"]["topology_control"] /
+                              max(j["time_s"] - j["timings"]["topology_control"], 1e-9),
         })
         if measure_hausdorff:
             (row["hd_mean"], row["hd_max"], row["theta_min_away"],
@@ -256,6 +262,12 @@ def main():
           f"same topology {sum(r['same_topology'] for r in ok)}/{len(ours)}, "
           f"θmin < 10°: {sum(r['theta_min'] < 10 for r in ok)}, "
           f"seeds added {sum(r.get('seeds_added') or 0 for r in ok)}")
+    added = sorted((r["topology_added"], name, n) for (name, n, tool), r in results.items()
+                   if tool == "cvtmesh" and "error" not in r)
+    if added:
+        worst = ", ".join(f"{name} {n} {100 * s:.0f}%" for s, name, n in reversed(added[-5:]))
+        print(f"time topology control adds to the rest of a remesh: median "
+              f"{100 * added[len(added) // 2][0]:.1f}%, most {worst}")
     # A smallest angle under 0.001° is a triangle of numerically zero area (two vertices a
     # rounding apart made femur.off's at 10k: 2e-12°), which the manifold guarantee excludes.
     if a.require_valid and (len(ok) < len(ours) or

@@ -494,6 +494,9 @@ TEST(TopologyControl, AThinPlateComesOutHomeomorphic) {
   EXPECT_TRUE(t.is_manifold());
   EXPECT_TRUE(same_topology(t, analyze_topology(plate)));
   EXPECT_LE(r.mesh.vertices.size(), 440u);
+  // Its time is reported, as part of the extraction's (issue 18: what topology control adds).
+  EXPECT_GT(r.seconds_topology, 0);
+  EXPECT_LE(r.seconds_topology, r.seconds_extraction);
   s.topology_rounds = -1;
   EXPECT_THROW(remesh(plate, s), InvalidArgument);
 }
@@ -584,6 +587,11 @@ TEST(TopologyControlSharedData, CreasesThatCostTheTopologyAreDroppedAndReported)
   }
   ASSERT_GT(analyze_topology(part).boundary_loops, 0u);
   EXPECT_FALSE(r.features.edges.empty());  // the sheets' rims
+  // The remesh redone without them is topology control's time, its RCVT among it: as long as
+  // the first remesh's RCVT (half the reported), give or take the machine's noise.
+  EXPECT_GE(r.seconds_topology, 0.25 * r.seconds_rcvt);
+  EXPECT_LE(r.seconds_topology,
+            r.seconds_initialization + r.seconds_rcvt + r.seconds_ccvt + r.seconds_extraction);
 }
 
 // The manifold guarantee and the input's topology (issue 18), with the defaults.

@@ -96,6 +96,11 @@ struct RemeshResult {
   // The AABB tree and the features, needed from CCVT on, are built while RCVT runs: their time
   // counts in seconds_rcvt. Extraction includes the polishing and the topology control.
   double seconds_initialization = 0, seconds_rcvt = 0, seconds_ccvt = 0, seconds_extraction = 0;
+  // What topology control added (issue 18: at most 25% of a remesh at the corpus median): its
+  // checks, rounds and last step (part of seconds_extraction), and a whole remesh redone
+  // without sharp features when keeping them cost the topology (counted in every phase when
+  // its output is taken, else in seconds_extraction).
+  double seconds_topology = 0;
   std::vector<double> energies;           // energy after each accepted iteration, in order
   std::size_t defects_polished = 0;       // badly shaped triangles before polishing
   int polish_rounds = 0;                  // polishing rounds that moved seeds

@@ -264,6 +264,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.seconds_rcvt += part.seconds_rcvt;
   all.seconds_ccvt += part.seconds_ccvt;
   all.seconds_extraction += part.seconds_extraction;
+  all.seconds_topology += part.seconds_topology;
   const double last_all = all.energies.empty() ? 0 : all.energies.back();
   const double last_part = part.energies.empty() ? 0 : part.energies.back();
   const std::size_t n = std::max(all.energies.size(), part.energies.size());

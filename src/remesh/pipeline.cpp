@@ -244,8 +244,10 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     const MendContext context{
         mesh,           result.input_topology,    features,  *curves, *projector, placement,
         *curve_spacing, {settings.polish_rounds}, traversals};
+    const auto mend_start = Clock::now();
     output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
                            mends);
+    result.seconds_topology = seconds_since(mend_start);
     result.mesh = std::move(output.mesh);
   }
   result.polish_rounds += mends.polish_rounds;

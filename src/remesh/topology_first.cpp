@@ -45,8 +45,16 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   }
   UnitRemesh second = remesh_unit(input, plain);
   RemeshResult& s = second.result;
-  if (topology_kept(s) <= topology_kept(r)) return first;
+  // The redone remesh is all topology control's, on top of the first's own.
+  const double redone =
+      s.seconds_initialization + s.seconds_rcvt + s.seconds_ccvt + s.seconds_extraction;
+  if (topology_kept(s) <= topology_kept(r)) {
+    first.result.seconds_topology += redone;
+    first.result.seconds_extraction += redone;
+    return first;
+  }
   s.feature_edges_dropped = std::move(dropped);
+  s.seconds_topology = r.seconds_topology + redone;
   s.iterations += r.iterations;
   s.rvd_evaluations += r.rvd_evaluations;
   s.seconds_initialization += r.seconds_initialization;

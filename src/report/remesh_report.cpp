@@ -72,7 +72,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["timings"] = {{"initialization", r.seconds_initialization},
                   {"rcvt", r.seconds_rcvt},
                   {"ccvt", r.seconds_ccvt},
-                  {"extraction", r.seconds_extraction}};
+                  {"extraction", r.seconds_extraction},
+                  {"topology_control", r.seconds_topology}};
 
   std::string& text = report.text;
   if (!r.features.empty()) {
