@@ -489,6 +489,11 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "time_s",
                           "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"initialization", "rcvt", "ccvt", "extraction", "topology_control"})
+    EXPECT_TRUE(j["timings"].contains(key)) << key;
+  // Its checks and last step run even where it adds no seed: part of the extraction.
+  EXPECT_LE(j["timings"]["topology_control"].get<double>(),
+            j["timings"]["extraction"].get<double>());
   EXPECT_EQ(j["same_topology"], true);
   EXPECT_EQ(j["mend_rounds"], 0);  // a sphere this well sampled needs no topology control
   EXPECT_LT(j["energy_final"].get<double>(), j["energy_initial"].get<double>());
