@@ -9,7 +9,12 @@ kept, wall time and peak memory. With ../shared/tools/vorpalite-iso present, vor
 the same input and count follows ours, measured by `cvtmesh quality --ref`.
 
     bench/corpus.py [--counts 1000,5000,10000] [--jobs J] [--no-vorpalite] [--only NAME,...]
-                    [--build build] [--data DIR] [--timeout S] [--markdown] [REMESH OPTIONS]
+                    [--build build] [--data DIR] [--timeout S] [--markdown] [--large]
+                    [REMESH OPTIONS]
+
+--large adds igea.ply at 50k vertices and a copy of it with its vertices and triangles in random
+order at 10k and 50k (issue 19: large inputs, and input order), written through the Python module
+(build/python; Debian's python3 with numpy).
 
 Runs are independent processes, J at a time (default: the core count), each single-threaded
 in cvtmesh (--threads 1) so that J runs do not fight over the cores; vorpalite likewise gets
@@ -143,6 +148,22 @@ def run_vorpalite(exe, vorpalite, mesh, n, timeout, extra=()):
         return row
 
 
+def shuffled_copy(mesh, out_dir, build):
+    """`mesh` with its vertices and triangles in random order (seed 1), as a PLY in out_dir."""
+    sys.path.insert(0, str(Path(build) / "python"))
+    import numpy as np  # only here: the rest of the benchmark needs the standard library alone
+    import cvtmesh
+    V, F = cvtmesh.read(str(mesh))
+    rng = np.random.default_rng(1)
+    order = rng.permutation(len(V))
+    new_id = np.empty_like(order)
+    new_id[order] = np.arange(len(order))
+    triangles = new_id[np.asarray(F)]
+    out = Path(out_dir) / f"{mesh.stem}-shuffled.ply"
+    cvtmesh.write(str(out), np.asarray(V)[order], triangles[rng.permutation(len(triangles))])
+    return out
+
+
 def job(args):
     kind, exe, vorpalite, mesh, n, timeout, extra, measure_hausdorff = args
     if kind == "cvtmesh":
@@ -217,6 +238,8 @@ HEADER = ["mesh", "N", "tool", "manifold", "same topo", "seeds added", "θmin", 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--counts", default="1000,5000,10000")
+    p.add_argument("--large", action="store_true",
+                   help="also igea.ply at 50k vertices and a shuffled copy at 10k and 50k")
     add_common_arguments(p)
     p.add_argument("--require-valid", action="store_true",
                    help="exit 1 unless every cvtmesh run succeeds with a manifold output (or the "
@@ -241,14 +264,19 @@ def main():
     use_vorpalite = not a.no_vorpalite and os.access(vorpalite, os.X_OK)
     counts = [int(c) for c in a.counts.split(",")]
 
+    runs = [(mesh, n) for mesh in meshes for n in counts]
+    large = tempfile.TemporaryDirectory() if a.large else None  # lives until the runs are done
+    if large:
+        igea = data / "igea.ply"
+        shuffled = shuffled_copy(igea, large.name, a.build)
+        runs += [(m, n) for m in (igea, shuffled) for n in (10000, 50000) if (m, n) not in runs]
     tasks = []
-    for mesh in meshes:
-        for n in counts:
-            # The guard checks validity only; the Hausdorff measurement would double its time.
-            task = (exe, str(vorpalite), mesh, n, a.timeout, extra, not a.require_valid)
-            tasks.append(("cvtmesh",) + task)
-            if use_vorpalite:
-                tasks.append(("vorpalite",) + task)
+    for mesh, n in runs:
+        # The guard checks validity only; the Hausdorff measurement would double its time.
+        task = (exe, str(vorpalite), mesh, n, a.timeout, extra, not a.require_valid)
+        tasks.append(("cvtmesh",) + task)
+        if use_vorpalite:
+            tasks.append(("vorpalite",) + task)
     print_header(HEADER, a.markdown)
     results = run_in_order(job, tasks, lambda t: (t[3].name, t[4], t[0]), a.jobs,
                            lambda key, r: print_row(key[0], key[1], r, a.markdown))
