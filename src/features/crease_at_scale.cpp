@@ -162,13 +162,15 @@ double CreaseScale::side_width(std::size_t first, const Vec3& a, const Vec3& b,
     const std::array<Vec3, 3> corners = mesh_.corners(t);
     for (int k = 0; k < 3; ++k) {
       width = std::max(width, norm(cross(along, corners[k] - a)) / length);
-      const double to_edge = distance_to_segment(centre, corners[k], corners[(k + 1) % 3]);
+      const auto to_edge = [&] {
+        return distance_to_segment(centre, corners[k], corners[(k + 1) % 3]);
+      };
       // A boundary that comes close bounds the side, however far the side reaches elsewhere
       // within the radius: the narrow ends of a strip between a crease and a hole's rim reach
       // its wide middle (lion.off at 5k: a scan's lip, 0.1-0.5 edge lengths from the rim).
-      if (on_boundary_[3 * t + k]) gap = std::min(gap, to_edge);
+      if (on_boundary_[3 * t + k]) gap = std::min(gap, to_edge());
       const std::size_t u = across(t, k);
-      if (u == kNone || seen.contains(u) || to_edge > radius) continue;
+      if (u == kNone || seen.contains(u) || to_edge() > radius) continue;
       seen.insert(u);
       stack.push_back(u);
     }

@@ -107,9 +107,10 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
                                      [](const EdgeUse& u, const Edge& x) { return u.edge < x; });
     return at != uses.end() && at->edge == e;
   };
-  auto restore = [&] {
-    mesh.triangles.resize(before);
-    mesh.vertices.resize(vertices_before);
+  // Back to the first `triangles` and `vertices`, dropping what patches added after them.
+  const auto truncate = [&](std::size_t triangles, std::size_t vertices) {
+    mesh.triangles.resize(triangles);
+    mesh.vertices.resize(vertices);
   };
   // A fan around a new vertex at the loop's centroid, onto the surface: it has no chord.
   const auto fan_of = [&](const Loop& loop) {
@@ -176,7 +177,7 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   if (all && manifold() &&
       ((closed_input && !any_lone) || same_topology(analyze_topology(mesh), input)))
     return {loops->size(), mesh.triangles.size() - before, mesh.vertices.size() - vertices_before};
-  restore();
+  truncate(before, vertices_before);
   if (!closed_input) return {};
   ClosedHoles closed;
   std::vector<Loop> open;
@@ -200,22 +201,21 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   }
   // The other holes' patches at once, as that nearly always leaves a manifold (one check, not one
   // a hole: topology control tries this step on each round's output); else each hole its patch,
-  // or else a fan, whichever first leaves a manifold.
+  // or else a fan, whichever first leaves a manifold. Without a lone triangle, the patches at
+  // once were the first try already, and failed.
   const std::size_t kept = mesh.triangles.size();
-  if (patch_all(open) && manifold()) {
+  if (closed.lone_triangles > 0 && patch_all(open) && manifold()) {
     closed.holes = open.size();
     open.clear();
   } else {
-    mesh.triangles.resize(kept);
-    mesh.vertices.resize(vertices_before);
+    truncate(kept, vertices_before);
   }
   for (const Loop& loop : open) {
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
     const auto closes = [&](const std::optional<std::vector<Triangle>>& patch) {
       if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
       if (patch && manifold()) return true;
-      mesh.triangles.resize(triangles);
-      mesh.vertices.resize(vertices);
+      truncate(triangles, vertices);
       return false;
     };
     if (closes(patch_of(loop)) || closes(fan_of(loop))) ++closed.holes;
