@@ -123,6 +123,11 @@ int run_remesh(RemeshOptions o) {
                "{}: warning: {} sharp edges not kept as features: tracing them cost the input's "
                "topology\n",
                o.output, r.feature_edges_dropped.size());
+  if (r.sizes_adapted)
+    fmt::print(stderr,
+               "{}: warning: edge lengths adapted to the local feature size: even ones cost the "
+               "input's topology\n",
+               o.output);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;
 }

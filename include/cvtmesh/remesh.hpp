@@ -111,6 +111,10 @@ struct RemeshResult {
   // or user edges) left out because the output kept the input's topology only without them:
   // topology wins (issue 18). Sorted; empty when every crease was kept.
   std::vector<Edge> feature_edges_dropped;
+  // Uniform sizes gave way (issue 18: validity first): the output of even edge lengths did not
+  // keep the input's topology, and one remeshed again with adaptive sizes (SizingSettings's
+  // local feature size, the same count) did. False when the sizes were the caller's.
+  bool sizes_adapted = false;
   // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had
   // cut it; and seeds added in the extra pieces of restricted cells split in several, or in

@@ -288,6 +288,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
     const Index a = component.input_vertex[e[0]], b = component.input_vertex[e[1]];
     all.feature_edges_dropped.push_back({std::min(a, b), std::max(a, b)});
   }
+  all.sizes_adapted = all.sizes_adapted || part.sizes_adapted;
   all.links_mended += part.links_mended;
   all.islands_seeded += part.islands_seeded;
   all.seeds_refined += part.seeds_refined;

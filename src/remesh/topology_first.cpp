@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iterator>
+#include <optional>
 
 #include "cvtmesh/topology.hpp"
 #include "system/elapsed.hpp"
@@ -10,6 +11,10 @@
 namespace cvtmesh {
 
 namespace {
+
+// The gradation of the adaptive sizes that uniform ones give way to: the default of
+// `--adaptive`.
+constexpr double kFallbackGradation = 1.5;
 
 // How well an output keeps its input's topology: 2 when it has the same components, Euler
 // characteristics and boundary loops, and no defect the input did not have (a manifold input
@@ -22,38 +27,35 @@ int topology_kept(const RemeshResult& r) {
   return r.triangles_removed == 0 ? 2 : 1;
 }
 
-}  // namespace
+// All of a remesh's time, its phases summed.
+double seconds_of(const RemeshResult& r) {
+  return r.seconds_initialization + r.seconds_rcvt + r.seconds_ccvt + r.seconds_extraction;
+}
 
-UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSettings& settings) {
-  const auto start = std::chrono::steady_clock::now();
-  UnitRemesh first = remesh_unit(input, settings);
-  const RemeshResult& r = first.result;
-  if (settings.mode == CvtMode::rcvt || !settings.features.sharp_edges || r.time_limit_reached ||
-      topology_kept(r) == 2)
-    return first;
-  RemeshSettings plain = settings;
-  plain.features.sharp_edges = false;
-  const Features kept = detect_features(input, plain.features);
-  std::vector<Edge> dropped;
-  std::set_difference(r.features.edges.begin(), r.features.edges.end(), kept.edges.begin(),
-                      kept.edges.end(), std::back_inserter(dropped));
-  if (dropped.empty()) return first;
+// `settings` with what is left of their time limit after `start`, or none if nothing is.
+std::optional<RemeshSettings> within_time_left(RemeshSettings settings,
+                                               std::chrono::steady_clock::time_point start) {
   if (settings.time_limit > 0) {
     const double spent = seconds_since(start);
-    if (spent >= settings.time_limit) return first;
-    plain.time_limit = settings.time_limit - spent;
+    if (spent >= settings.time_limit) return std::nullopt;
+    settings.time_limit -= spent;
   }
-  UnitRemesh second = remesh_unit(input, plain);
-  RemeshResult& s = second.result;
-  // The redone remesh is all topology control's, on top of the first's own.
-  const double redone =
-      s.seconds_initialization + s.seconds_rcvt + s.seconds_ccvt + s.seconds_extraction;
+  return settings;
+}
+
+// Of `best` and a remesh `redo` of the same input, the one that keeps the topology better
+// (`best` on a tie). Both runs' work is counted in the one returned: a redo not taken counts as
+// topology control's and extraction's time, a redo taken has the time and the evaluations of
+// the runs before it added to its own.
+UnitRemesh better_of(UnitRemesh best, UnitRemesh redo) {
+  RemeshResult& r = best.result;
+  RemeshResult& s = redo.result;
+  const double redone = seconds_of(s);
   if (topology_kept(s) <= topology_kept(r)) {
-    first.result.seconds_topology += redone;
-    first.result.seconds_extraction += redone;
-    return first;
+    r.seconds_topology += redone;
+    r.seconds_extraction += redone;
+    return best;
   }
-  s.feature_edges_dropped = std::move(dropped);
   s.seconds_topology = r.seconds_topology + redone;
   s.iterations += r.iterations;
   s.rvd_evaluations += r.rvd_evaluations;
@@ -61,7 +63,53 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   s.seconds_rcvt += r.seconds_rcvt;
   s.seconds_ccvt += r.seconds_ccvt;
   s.seconds_extraction += r.seconds_extraction;
-  return second;
+  return redo;
+}
+
+}  // namespace
+
+UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  UnitRemesh best = remesh_unit(input, settings);
+  if (settings.mode == CvtMode::rcvt || best.result.time_limit_reached ||
+      topology_kept(best.result) == 2)
+    return best;
+  // The settings of the output kept so far.
+  RemeshSettings used = settings;
+  // First the sharp creases give way, if tracing them is what cost the topology.
+  if (settings.features.sharp_edges) {
+    RemeshSettings plain = settings;
+    plain.features.sharp_edges = false;
+    const Features kept = detect_features(input, plain.features);
+    std::vector<Edge> dropped;
+    std::set_difference(best.result.features.edges.begin(), best.result.features.edges.end(),
+                        kept.edges.begin(), kept.edges.end(), std::back_inserter(dropped));
+    const std::optional<RemeshSettings> timed = within_time_left(plain, start);
+    if (!dropped.empty() && timed) {
+      UnitRemesh second = remesh_unit(input, *timed);
+      second.result.feature_edges_dropped = std::move(dropped);
+      const bool taken = topology_kept(second.result) > topology_kept(best.result);
+      best = better_of(std::move(best), std::move(second));
+      if (taken) used = plain;
+    }
+  }
+  // Then even sizes, where the topology is still lost: parts thinner than the even edge
+  // length, holes and gaps narrower than it, get cells their size from the start with the
+  // local feature size (issue 20), where topology control's seeds come too late or too few
+  // (tower_holes.obj at 1k: a 3-vertex hole 0.17 edge lengths across, 0.1 from a window).
+  // Not for the caller's own sizes or seeds, not with topology control off, and not where the
+  // time is up.
+  if (topology_kept(best.result) > 0 || best.result.time_limit_reached || used.sizing.active() ||
+      !used.initial_seeds.empty() || used.topology_rounds == 0)
+    return best;
+  RemeshSettings adapted = used;
+  adapted.sizing.adaptive = kFallbackGradation;
+  const std::optional<RemeshSettings> timed = within_time_left(adapted, start);
+  if (!timed) return best;
+  UnitRemesh third = remesh_unit(input, *timed);
+  third.result.sizes_adapted = true;
+  third.result.feature_edges_dropped = best.result.feature_edges_dropped;
+  return better_of(std::move(best), std::move(third));
 }
 
 }  // namespace cvtmesh

@@ -1,5 +1,6 @@
-// Topology wins over sharp features (issue 18): a crease that the output cannot trace without
-// losing the input's topology is dropped, and the report says so.
+// Topology wins over sharp features and over even sizes (issue 18): a crease that the output
+// cannot trace without losing the input's topology is dropped, even edge lengths that cannot
+// resolve its thin parts give way to adaptive ones, and the report says so.
 #pragma once
 
 #include "remesh/pipeline.hpp"
@@ -11,7 +12,9 @@ namespace cvtmesh {
 // edges), remesh_unit again without them. The second output is taken only if it keeps the
 // topology better: with no triangle removed by the last step, or with its holes closed again
 // where the first's topology differs. Its `feature_edges_dropped` lists the creases left out.
-// Both runs' work is counted.
+// Where the output kept still has another topology than the input's and its sizes were even
+// (no sizing, no seeds given), remesh_unit again with adaptive sizes at the same count, taken
+// on the same terms (`sizes_adapted`). All runs' work is counted.
 UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSettings& settings);
 
 }  // namespace cvtmesh

@@ -36,6 +36,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["feature_edges_out"] = r.feature_edges.size();
   j["feature_edges_missing"] = r.feature_edges_missing;
   j["feature_edges_dropped"] = r.feature_edges_dropped.size();
+  j["sizes_adapted"] = r.sizes_adapted;
   j["feature_sector_min_deg"] = sector;
   j["links_mended"] = r.links_mended;
   j["islands_seeded"] = r.islands_seeded;
@@ -93,6 +94,10 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         "  features  {} sharp edges dropped: the output keeps the input's topology only without "
         "them\n",
         r.feature_edges_dropped.size());
+  if (r.sizes_adapted)
+    text +=
+        "  sizing    adaptive: the output of even edge lengths did not keep the input's "
+        "topology\n";
   text += fmt::format(
       "  sizing    edge length / target: median {:.3f}, 5th-95th percentile {:.3f}-{:.3f}\n",
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
