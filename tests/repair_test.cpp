@@ -1,6 +1,8 @@
 // Shape-preserving repairs: each kind is counted, applied, and keeps the surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
@@ -127,6 +129,46 @@ TEST(Repair, DropsDuplicateTrianglesInAnyOrderOrOrientation) {
   EXPECT_EQ(m.triangles.size(), n);
   EXPECT_EQ(m.triangles[5], t);  // the first one is kept, in place
   EXPECT_TRUE(analyze_topology(m).consistently_oriented);
+}
+
+// cube(n)'s triangles of the face at x = 1 (all of their corners there), listed the other way
+// round.
+TriangleMesh cube_with_face_flipped(int n) {
+  TriangleMesh m = cube(n);
+  for (Triangle& t : m.triangles)
+    if (std::all_of(t.begin(), t.end(), [&](Index v) { return m.vertices[v].x == 1; }))
+      std::swap(t[1], t[2]);
+  return m;
+}
+
+TEST(Repair, FlipsTheTrianglesListedTheOtherWayRoundFromMostOfTheirPatch) {
+  TriangleMesh m = cube_with_face_flipped(2);
+  ASSERT_FALSE(analyze_topology(m).consistently_oriented);
+  const std::vector<Vec3> vertices = m.vertices;
+  const RepairReport r = repair_mesh(m);
+  EXPECT_EQ(r.triangles_flipped, 8u);  // the face's 2 × 2 quads, not the other five faces
+  EXPECT_NE(r.summary().find("8 triangles flipped"), std::string::npos);
+  EXPECT_TRUE(analyze_topology(m).consistently_oriented);
+  EXPECT_EQ(m.vertices, vertices);
+  EXPECT_EQ(m.triangles, cube(2).triangles);  // as the cube was, outward
+}
+
+TEST(Repair, AMajorityListedTheOtherWayRoundKeepsItsOrientation) {
+  // Every face but x = 1 flipped: those five are the majority, and the one face flips to them.
+  TriangleMesh m = cube(2);
+  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+  TriangleMesh expected = m;
+  m = cube_with_face_flipped(2);
+  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+  EXPECT_EQ(repair_mesh(m).triangles_flipped, 8u);
+  EXPECT_EQ(m.triangles, expected.triangles);
+}
+
+TEST(Repair, ANonOrientableSurfaceIsLeftAsItIs) {
+  TriangleMesh m = moebius_strip(12);
+  const TriangleMesh before = m;
+  EXPECT_EQ(repair_mesh(m).triangles_flipped, 0u);
+  EXPECT_EQ(m.triangles, before.triangles);
 }
 
 TEST(Repair, DropsUnreferencedVerticesAndRenumbers) {

@@ -737,6 +737,23 @@ TriangleMesh sheet_with_window_and_pinhole(int n, double window) {
   return used;
 }
 
+// An input with a face listed the other way round from the rest (multibody.stl of trimesh's test
+// models, a box so: 2 components out of 1 at every count) is remeshed as if oriented.
+TEST(HardCases, ABoxWithOneFaceListedTheOtherWayRound) {
+  TriangleMesh box = cube(2);
+  for (Triangle& t : box.triangles)
+    if (std::all_of(t.begin(), t.end(), [&](Index v) { return box.vertices[v].z == 1; }))
+      std::swap(t[1], t[2]);
+  ASSERT_FALSE(analyze_topology(box).consistently_oriented);
+  RemeshSettings s;
+  s.vertices = 500;
+  s.hausdorff.reset();
+  const RemeshResult r = remesh(box, s);
+  expect_topology_kept(r, box);
+  EXPECT_TRUE(analyze_topology(r.mesh).consistently_oriented);
+  EXPECT_GE(measure_quality(r.mesh).angle_min_deg, 30);
+}
+
 // Validity first (issue 18): where even edge lengths cannot keep a hole apart from its
 // neighbour (tower_holes.obj of a public test set, outside the corpus, lost one of its 38 loops
 // at 1k this way), the remesh is redone with adaptive sizes, which give the narrow bridge cells

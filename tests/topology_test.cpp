@@ -113,23 +113,7 @@ TEST(Topology, FlippedTriangleIsOrientableButNotConsistent) {
 }
 
 TEST(Topology, MoebiusStripIsNotOrientable) {
-  // A strip of n quads whose ends are glued with a half twist.
-  const int n = 12;
-  TriangleMesh m;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * 3.141592653589793 * i / n;
-    for (double w : {-0.2, 0.2}) {
-      const double r = 1 + w * std::cos(a / 2);
-      m.vertices.push_back({r * std::cos(a), r * std::sin(a), w * std::sin(a / 2)});
-    }
-  }
-  for (int i = 0; i < n; ++i) {
-    const Index a0 = 2 * i, a1 = 2 * i + 1;
-    const bool last = i == n - 1;
-    const Index b0 = last ? 1 : 2 * i + 2, b1 = last ? 0 : 2 * i + 3;  // the twist swaps sides
-    m.triangles.push_back({a0, b0, b1});
-    m.triangles.push_back({a0, b1, a1});
-  }
+  const TriangleMesh m = moebius_strip(12);
   const TopologyReport t = analyze_topology(m);
   EXPECT_FALSE(t.orientable);
   EXPECT_EQ(t.boundary_loops, 1u);

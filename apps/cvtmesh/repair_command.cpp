@@ -35,6 +35,7 @@ int run_repair(const RepairOptions& o) {
     json["degenerate_triangles_removed"] = repairs.degenerate_triangles_removed;
     json["duplicate_triangles_removed"] = repairs.duplicate_triangles_removed;
     json["unreferenced_vertices_removed"] = repairs.unreferenced_vertices_removed;
+    json["triangles_flipped"] = repairs.triangles_flipped;
     fmt::print("{}\n", json.dump(2));
   } else {
     fmt::print("{}: {}\n", o.output, topology_line(topology));

@@ -17,10 +17,12 @@ struct RepairReport {
   std::size_t degenerate_triangles_removed = 0;  // zero area (repeated or collinear corners)
   std::size_t duplicate_triangles_removed = 0;   // same three vertices, any order or orientation
   std::size_t unreferenced_vertices_removed = 0;
+  // Triangles listed the other way round from their neighbours (orient_consistently).
+  std::size_t triangles_flipped = 0;
 
   bool changed() const {
     return duplicate_vertices_merged + degenerate_triangles_removed + duplicate_triangles_removed +
-               unreferenced_vertices_removed >
+               unreferenced_vertices_removed + triangles_flipped >
            0;
   }
   // Whether summary() has anything to say: a change, or duplicates kept apart.
@@ -34,9 +36,11 @@ inline constexpr Index kRemovedVertex = ~Index{0};
 // Applies, in this order: merge exactly-duplicate vertices where that stitches the surface and
 // makes no edge or vertex non-manifold (the others are kept apart and counted), drop zero-area
 // triangles (exact collinearity test), drop duplicate triangles (first one kept), drop unreferenced
-// vertices. Deterministic; the kept elements keep their relative order. `new_id`, when given,
-// receives each vertex's id in the repaired mesh: a merged duplicate's is that of the vertex it
-// was merged into; a removed vertex's is kRemovedVertex.
+// vertices, flip the triangles listed the other way round from most of their patch (the
+// triangles joined by manifold edges; a patch no orientation makes consistent stays as it is).
+// Deterministic; the kept elements keep their relative order. `new_id`, when given, receives each
+// vertex's id in the repaired mesh: a merged duplicate's is that of the vertex it was merged into;
+// a removed vertex's is kRemovedVertex.
 RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id = nullptr);
 
 // Edges given in a mesh's vertex ids (feature edges read from a file), in the ids of the mesh

@@ -21,6 +21,7 @@
 
 #include "cvtmesh/io.hpp"
 #include "io/input_problem.hpp"
+#include "io/obj_statements.hpp"
 #include "io/read_off.hpp"
 #include "io/read_ply.hpp"
 
@@ -57,9 +58,11 @@ bool read_with_cgal(MeshFormat format, std::istream& in, PolygonSoup& soup, bool
   std::vector<Point> points;
   bool ok = false;
   switch (format) {
-    case MeshFormat::obj:
-      ok = CGAL::IO::read_OBJ(in, points, soup.polygons, np);
+    case MeshFormat::obj: {
+      std::istringstream statements(obj_for_cgal(in));
+      ok = CGAL::IO::read_OBJ(statements, points, soup.polygons, np);
       break;
+    }
     case MeshFormat::off:
     case MeshFormat::ply:
       break;  // read by read_off and read_ply, never by CGAL

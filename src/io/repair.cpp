@@ -8,6 +8,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "geometry/manifold_defects.hpp"
+#include "geometry/orient_triangles.hpp"
 
 namespace cvtmesh {
 
@@ -153,6 +154,7 @@ std::string RepairReport::summary() const {
   add(degenerate_triangles_removed, "zero-area triangles removed");
   add(duplicate_triangles_removed, "duplicate triangles removed");
   add(unreferenced_vertices_removed, "unreferenced vertices removed");
+  add(triangles_flipped, "triangles flipped to agree with their neighbours");
   return s;
 }
 
@@ -165,6 +167,7 @@ RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id) {
   r.degenerate_triangles_removed = remove_degenerate_triangles(mesh);
   r.duplicate_triangles_removed = remove_duplicate_triangles(mesh);
   r.unreferenced_vertices_removed = remove_unreferenced_vertices(mesh, ids);
+  r.triangles_flipped = orient_consistently(mesh);
   if (new_id) *new_id = std::move(ids);
   return r;
 }

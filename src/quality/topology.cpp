@@ -4,44 +4,12 @@
 #include <numeric>
 #include <tuple>
 
+#include "geometry/triangle_sides.hpp"
 #include "geometry/union_find.hpp"
 
 namespace cvtmesh {
 
 namespace {
-
-// One triangle side: the edge (lo, hi) with lo < hi, the triangle, and whether the triangle
-// walks it from lo to hi.
-struct Side {
-  Index lo, hi;
-  std::size_t triangle;
-  bool forward;
-};
-
-// Sorted by (lo, hi, triangle): a counting sort on lo (stable, so each bucket is in triangle
-// order), then each bucket, a vertex's few sides, by hi. Linear where one global sort of the
-// 3·F sides was the report's largest cost on big inputs.
-std::vector<Side> sorted_sides(const TriangleMesh& mesh) {
-  std::vector<std::size_t> start(mesh.vertices.size() + 1, 0);
-  for (const Triangle& f : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++start[std::min(f[k], f[(k + 1) % 3]) + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<Side> sides(3 * mesh.triangles.size());
-  std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& f = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const Index a = f[k], b = f[(k + 1) % 3];
-      sides[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), t, a < b};
-    }
-  }
-  for (std::size_t v = 0; v + 1 < start.size(); ++v)
-    std::sort(sides.begin() + start[v], sides.begin() + start[v + 1],
-              [](const Side& x, const Side& y) {
-                return std::tie(x.hi, x.triangle) < std::tie(y.hi, y.triangle);
-              });
-  return sides;
-}
 
 // The corner of triangle t at vertex v, as an index into 3·t + k.
 std::size_t corner(const TriangleMesh& mesh, std::size_t t, Index v) {
@@ -68,7 +36,7 @@ TopologyReport analyze_topology(const TriangleMesh& mesh) {
 
   // Walk the edges: boundary and non-manifold counts, boundary graph, fans around vertices
   // (corners joined across an edge they share), and orientation parity across manifold edges.
-  const std::vector<Side> sides = sorted_sides(mesh);
+  const std::vector<TriangleSide> sides = sorted_sides(mesh);
   UnionFind boundary_sets(nv), fans(3 * nt), parity(2 * nt);  // parity: 2t = as is, 2t+1 = flipped
   std::vector<bool> on_boundary(nv, false);
   for (std::size_t i = 0; i < sides.size();) {

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <utility>
 
+#include "geometry/orient_triangles.hpp"
 #include "remesh/by_component.hpp"
 #include "remesh/pipeline.hpp"
 #include "sizing/size_field.hpp"
@@ -55,6 +57,13 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
 }
 
 RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
+  // Output triangles take the orientation of the input under them: an input partly listed the
+  // other way round is remeshed as repair_mesh orients it (geometry/orient_triangles.hpp).
+  if (const std::vector<std::size_t> flips = triangles_to_flip(input); !flips.empty()) {
+    TriangleMesh oriented = input;
+    for (const std::size_t t : flips) std::swap(oriented.triangles[t][1], oriented.triangles[t][2]);
+    return remesh(oriented, settings);
+  }
   // Issue 22: the work is done on the input scaled by a power of two to about unit size, and
   // the output scaled back, both exactly; a shape in any units gives the same output up to the
   // scale.

@@ -152,6 +152,25 @@ TriangleMesh sheet_pinched_at_a_point(int n) {
   return m;
 }
 
+TriangleMesh moebius_strip(int n) {
+  TriangleMesh m;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    for (double w : {-0.2, 0.2}) {
+      const double r = 1 + w * std::cos(a / 2);
+      m.vertices.push_back({r * std::cos(a), r * std::sin(a), w * std::sin(a / 2)});
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    const auto a0 = static_cast<Index>(2 * i), a1 = static_cast<Index>(2 * i + 1);
+    const bool last = i == n - 1;
+    const Index b0 = last ? 1 : a0 + 2, b1 = last ? 0 : a0 + 3;  // the twist swaps sides
+    m.triangles.push_back({a0, b0, b1});
+    m.triangles.push_back({a0, b1, a1});
+  }
+  return m;
+}
+
 TriangleMesh pinched_torus(double r, int nu, int nv) {
   TriangleMesh m;
   m.vertices.push_back({1, 0, 0});  // the pinch

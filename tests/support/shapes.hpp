@@ -46,6 +46,10 @@ TriangleMesh sheet_pinched_at_a_point(int n);
 // with two fans (two rounded ends touching). `nu` steps around, `nv` around the tube.
 TriangleMesh pinched_torus(double r, int nu, int nv);
 
+// A Möbius strip of n quads (each split in two) around the unit circle, 0.4 wide: its ends
+// glued with a half twist. One boundary loop, not orientable.
+TriangleMesh moebius_strip(int n);
+
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
 

@@ -1,0 +1,22 @@
+// The sides of a triangle soup's triangles, sorted so that the triangles of an edge are
+// neighbours in the list: the connectivity a soup read from a file does not store.
+#pragma once
+
+#include <vector>
+
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+// One triangle side: the edge (lo, hi) with lo < hi, the triangle, and whether the triangle
+// walks it from lo to hi.
+struct TriangleSide {
+  Index lo, hi;
+  std::size_t triangle;
+  bool forward;
+};
+
+// Every triangle's three sides, sorted by (lo, hi, triangle).
+std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh);
+
+}  // namespace cvtmesh
