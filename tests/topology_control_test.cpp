@@ -775,6 +775,38 @@ TEST(HardCases, AHoleBesideAnotherFarCloserThanTheEdgeLengthStaysApart) {
   EXPECT_GT(adapted, 0);  // the even sizes lost the pinhole at least once
 }
 
+// A torus whose tube, 2π · 0.03 ≈ 0.19 around, is about the spacing of 60 vertices (0.14): no
+// round of topology control nor adaptive sizes keep its genus at 60, the count grows (issue 18
+// item 2), and the report says by how much.
+TEST(HardCases, ATubeTooThinForTheCountAskedForGetsMoreVertices) {
+  const TriangleMesh ring = torus(1.0, 0.03, 400, 12);
+  for (const std::uint64_t seed : {1, 2}) {
+    RemeshSettings s;
+    s.vertices = 60;
+    s.seed = seed;
+    s.hausdorff.reset();
+    const RemeshResult r = remesh(ring, s);
+    expect_topology_kept(r, ring);
+    EXPECT_GT(r.count_grown, 0u);
+    EXPECT_LE(r.count_grown, 3 * 60u);  // at most 4 times the count
+    EXPECT_GE(r.mesh.vertices.size(), 60 + r.count_grown);
+  }
+}
+
+// Thinner still (0.06 around against 0.1), the cells wrap around the tube at 4 times the count
+// too, and meet in no triangle: an error that says so, not an empty output.
+TEST(HardCases, ATubeFarTooThinForTheCountAskedForIsAnError) {
+  RemeshSettings s;
+  s.vertices = 40;
+  s.hausdorff.reset();
+  try {
+    remesh(torus(1.0, 0.01, 400, 12), s);
+    FAIL() << "an output for cells that wrap around the tube";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("ask for more vertices"), std::string::npos) << e.what();
+  }
+}
+
 // Where even sizes keep the topology, they stay, and with topology control off nothing is
 // redone.
 TEST(HardCases, EvenSizesThatKeepTheTopologyOrNoTopologyControlAreNotAdapted) {

@@ -128,6 +128,11 @@ int run_remesh(RemeshOptions o) {
                "{}: warning: edge lengths adapted to the local feature size: even ones cost the "
                "input's topology\n",
                o.output);
+  if (r.count_grown > 0)
+    fmt::print(stderr,
+               "{}: warning: {} vertices more than asked for: fewer did not keep the input's "
+               "topology\n",
+               o.output, r.count_grown);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;
 }

@@ -115,6 +115,10 @@ struct RemeshResult {
   // keep the input's topology, and one remeshed again with adaptive sizes (SizingSettings's
   // local feature size, the same count) did. False when the sizes were the caller's.
   bool sizes_adapted = false;
+  // Vertices asked for on top of the count requested, where neither topology control nor
+  // adaptive sizes kept the input's topology: the count doubled, at most twice (issue 18 item 2:
+  // the count grows for the topology alone). 0 when the count asked for sufficed.
+  std::size_t count_grown = 0;
   // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had
   // cut it; and seeds added in the extra pieces of restricted cells split in several, or in

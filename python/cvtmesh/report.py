@@ -201,7 +201,7 @@ def remesh_lines(remesh):
         return ("<p>The remesh's JSON report was not given (<code>--remesh-json</code>): "
                 "the seeds added by topology control are not shown.</p>")
     keys = ["feature_edges_in", "feature_edges_out", "feature_edges_missing",
-            "feature_edges_dropped", "sizes_adapted", "corners_in",
+            "feature_edges_dropped", "sizes_adapted", "count_grown", "corners_in",
             "corners_out", "feature_hausdorff_max_pct", "seeds_added", "islands_seeded",
             "seeds_refined", "links_mended", "triangles_removed", "holes_closed", "vertices_closing_holes",
             "flat_ears_removed", "valence_three_removed", "short_edges_collapsed",

@@ -289,6 +289,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
     all.feature_edges_dropped.push_back({std::min(a, b), std::max(a, b)});
   }
   all.sizes_adapted = all.sizes_adapted || part.sizes_adapted;
+  all.count_grown += part.count_grown;
   all.links_mended += part.links_mended;
   all.islands_seeded += part.islands_seeded;
   all.seeds_refined += part.seeds_refined;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "cvtmesh/errors.hpp"
 #include "geometry/orient_triangles.hpp"
 #include "remesh/by_component.hpp"
 #include "remesh/pipeline.hpp"
@@ -74,9 +75,17 @@ RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
                                                  ? requested_vertex_count(input, settings)
                                                  : settings.initial_seeds.size());
   const int exponent = size_exponent(input);
-  if (exponent == 0) return remesh_by_component(input, settings);
-  RemeshResult r = remesh_by_component(scaled_by_power_of_two(input, -exponent),
-                                       scaled_settings(settings, -exponent));
+  RemeshResult r = exponent == 0 ? remesh_by_component(input, settings)
+                                 : remesh_by_component(scaled_by_power_of_two(input, -exponent),
+                                                       scaled_settings(settings, -exponent));
+  // Cells that wrap around parts thinner than the spacing everywhere meet in no Voronoi vertex
+  // on the surface: no triangle, however the count grew (a torus whose tube is a fifth of the
+  // spacing around). An empty file would be no answer.
+  if (r.mesh.triangles.empty() && !r.time_limit_reached && !input.triangles.empty())
+    throw InvalidArgument(
+        "no output triangle: the surface is thinner than the spacing of the vertices asked for "
+        "(cells wrap around it); ask for more vertices");
+  if (exponent == 0) return r;
   r.mesh = scaled_by_power_of_two(std::move(r.mesh), exponent);
   if (r.hausdorff) r.hausdorff = scaled_by_power_of_two(*r.hausdorff, exponent);
   return r;

@@ -47,7 +47,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
   j["valence_three_removed"] = r.valence_three_removed;
-  j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended;
+  j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended + r.count_grown;
+  j["count_grown"] = r.count_grown;
   j["vertices_added"] = r.vertices_added;
   j["links_flipped"] = r.links_flipped;
   j["tips_closed"] = r.tips_closed;
@@ -98,6 +99,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
     text +=
         "  sizing    adaptive: the output of even edge lengths did not keep the input's "
         "topology\n";
+  if (r.count_grown > 0)
+    text += fmt::format(
+        "  sizing    {} vertices asked for on top of the count: fewer did not keep the input's "
+        "topology\n",
+        r.count_grown);
   text += fmt::format(
       "  sizing    edge length / target: median {:.3f}, 5th-95th percentile {:.3f}-{:.3f}\n",
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
