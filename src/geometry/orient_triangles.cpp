@@ -3,42 +3,30 @@
 #include "geometry/triangle_sides.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
-#include <tuple>
 #include <utility>
 
 namespace cvtmesh {
 
 namespace {
 
-// Per triangle, the triangles across its manifold edges, and whether the two run along that edge
-// the same way (one of them must then flip): compressed lists.
-struct Neighbours {
-  std::vector<std::size_t> start;
-  std::vector<std::pair<std::size_t, bool>> across;
+// A triangle across a manifold edge, and whether the two run along that edge the same way (one
+// of them must then flip).
+struct Across {
+  std::size_t triangle;
+  bool same_way;
 };
 
-Neighbours manifold_neighbours(const TriangleMesh& mesh) {
-  const std::size_t nt = mesh.triangles.size();
-  const std::vector<TriangleSide> sides = sorted_sides(mesh);
-  std::vector<std::tuple<std::size_t, std::size_t, bool>> links;  // both ways
+// Calls visit(first side, second side) for each edge of exactly two triangles.
+template <class Visit>
+void for_manifold_edges(const std::vector<TriangleSide>& sides, const Visit& visit) {
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i;
     while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;
-    if (j - i == 2) {
-      const bool same_way = sides[i].forward == sides[i + 1].forward;
-      links.emplace_back(sides[i].triangle, sides[i + 1].triangle, same_way);
-      links.emplace_back(sides[i + 1].triangle, sides[i].triangle, same_way);
-    }
+    if (j - i == 2) visit(sides[i], sides[i + 1]);
     i = j;
   }
-  std::sort(links.begin(), links.end());
-  Neighbours n;
-  n.start.assign(nt + 1, 0);
-  for (const auto& [t, u, same] : links) ++n.start[t + 1];
-  for (std::size_t t = 0; t < nt; ++t) n.start[t + 1] += n.start[t];
-  for (const auto& [t, u, same] : links) n.across.emplace_back(u, same);
-  return n;
 }
 
 double area(const TriangleMesh& mesh, std::size_t t) {
@@ -50,7 +38,21 @@ double area(const TriangleMesh& mesh, std::size_t t) {
 
 std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh) {
   const std::size_t nt = mesh.triangles.size();
-  const Neighbours n = manifold_neighbours(mesh);
+  const std::vector<TriangleSide> sides = sorted_sides(mesh);
+  // Most meshes are consistent already: that is all there is to find out then.
+  bool consistent = true;
+  for_manifold_edges(sides, [&](const TriangleSide& a, const TriangleSide& b) {
+    consistent = consistent && a.forward != b.forward;
+  });
+  if (consistent) return {};
+  // Each triangle has a neighbour across each of its manifold edges, three at most.
+  std::vector<std::array<Across, 3>> across(nt);
+  std::vector<std::uint8_t> neighbours(nt, 0);
+  for_manifold_edges(sides, [&](const TriangleSide& a, const TriangleSide& b) {
+    const bool same_way = a.forward == b.forward;
+    across[a.triangle][neighbours[a.triangle]++] = {b.triangle, same_way};
+    across[b.triangle][neighbours[b.triangle]++] = {a.triangle, same_way};
+  });
   std::vector<std::int8_t> flip(nt, -1);  // -1: not reached yet
   std::vector<std::size_t> flips, patch;
   for (std::size_t first = 0; first < nt; ++first) {
@@ -59,21 +61,21 @@ std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh) {
     // requires.
     patch.assign(1, first);
     flip[first] = 0;
-    bool consistent = true;
+    bool orientable = true;
     for (std::size_t k = 0; k < patch.size(); ++k) {
       const std::size_t t = patch[k];
-      for (std::size_t e = n.start[t]; e < n.start[t + 1]; ++e) {
-        const auto [u, same_way] = n.across[e];
+      for (std::uint8_t e = 0; e < neighbours[t]; ++e) {
+        const auto [u, same_way] = across[t][e];
         const std::int8_t wanted = static_cast<std::int8_t>(flip[t] ^ (same_way ? 1 : 0));
         if (flip[u] < 0) {
           flip[u] = wanted;
           patch.push_back(u);
         } else if (flip[u] != wanted) {
-          consistent = false;
+          orientable = false;
         }
       }
     }
-    if (!consistent) continue;
+    if (!orientable) continue;
     double flipped_area = 0, kept_area = 0;
     for (const std::size_t t : patch) (flip[t] ? flipped_area : kept_area) += area(mesh, t);
     const std::int8_t flipped = flipped_area > kept_area ? 0 : 1;  // the minority flips
