@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "cvtmesh/errors.hpp"
 #include "cvtmesh/topology.hpp"
 #include "system/elapsed.hpp"
 
@@ -36,15 +37,21 @@ double seconds_of(const RemeshResult& r) {
   return r.seconds_initialization + r.seconds_rcvt + r.seconds_ccvt + r.seconds_extraction;
 }
 
-// `settings` with what is left of their time limit after `start`, or none if nothing is.
-std::optional<RemeshSettings> within_time_left(RemeshSettings settings,
-                                               std::chrono::steady_clock::time_point start) {
+// remesh_unit again with `settings`, within what is left of their time limit after `start`;
+// none if nothing is left, or if these settings cannot be met (a redo's features needing more
+// vertices than its count, say): a second try never turns an output into an error.
+std::optional<UnitRemesh> retried(const TriangleMesh& input, RemeshSettings settings,
+                                  std::chrono::steady_clock::time_point start) {
   if (settings.time_limit > 0) {
     const double spent = seconds_since(start);
     if (spent >= settings.time_limit) return std::nullopt;
     settings.time_limit -= spent;
   }
-  return settings;
+  try {
+    return remesh_unit(input, settings);
+  } catch (const InvalidArgument&) {
+    return std::nullopt;
+  }
 }
 
 // How well an output keeps its input's topology, for choosing between outputs: topology_kept,
@@ -94,12 +101,12 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
     std::vector<Edge> dropped;
     std::set_difference(best.result.features.edges.begin(), best.result.features.edges.end(),
                         kept.edges.begin(), kept.edges.end(), std::back_inserter(dropped));
-    const std::optional<RemeshSettings> timed = within_time_left(plain, start);
-    if (!dropped.empty() && timed) {
-      UnitRemesh second = remesh_unit(input, *timed);
-      second.result.feature_edges_dropped = std::move(dropped);
-      const bool taken = rank(second.result) > rank(best.result);
-      best = better_of(std::move(best), std::move(second));
+    std::optional<UnitRemesh> second;
+    if (!dropped.empty()) second = retried(input, plain, start);
+    if (second) {
+      second->result.feature_edges_dropped = std::move(dropped);
+      const bool taken = rank(second->result) > rank(best.result);
+      best = better_of(std::move(best), std::move(*second));
       if (taken) used = plain;
     }
   }
@@ -114,11 +121,10 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
     return best;
   RemeshSettings adapted = used;
   adapted.sizing.adaptive = kFallbackGradation;
-  if (const std::optional<RemeshSettings> timed = within_time_left(adapted, start)) {
-    UnitRemesh third = remesh_unit(input, *timed);
-    third.result.sizes_adapted = true;
-    third.result.feature_edges_dropped = best.result.feature_edges_dropped;
-    best = better_of(std::move(best), std::move(third));
+  if (std::optional<UnitRemesh> third = retried(input, adapted, start)) {
+    third->result.sizes_adapted = true;
+    third->result.feature_edges_dropped = best.result.feature_edges_dropped;
+    best = better_of(std::move(best), std::move(*third));
   }
   // Last, the count grows, as the paper's rule lets it for the topology alone (§4.4, issue 18
   // item 2): where neither topology control's seeds nor the sizes kept it at the count asked
@@ -132,12 +138,11 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
                          !best.result.time_limit_reached;
        ++doubling) {
     more.vertices *= 2;
-    const std::optional<RemeshSettings> timed = within_time_left(more, start);
-    if (!timed) break;
-    UnitRemesh next = remesh_unit(input, *timed);
-    next.result.count_grown = more.vertices - asked;
-    next.result.feature_edges_dropped = best.result.feature_edges_dropped;
-    best = better_of(std::move(best), std::move(next));
+    std::optional<UnitRemesh> next = retried(input, more, start);
+    if (!next) continue;
+    next->result.count_grown = more.vertices - asked;
+    next->result.feature_edges_dropped = best.result.feature_edges_dropped;
+    best = better_of(std::move(best), std::move(*next));
   }
   return best;
 }
