@@ -50,6 +50,23 @@ TEST(FlatEars, AFlatEarGoesAndTheBoundaryLoopStays) {
   EXPECT_GT(measure_quality(mesh).angle_min_deg, 10);
 }
 
+// A corner's ear whose vertex lies on top of a neighbour (as two corners 6e-34 apart at a
+// non-manifold vertex of octagonal_pocket.stl did): no area, so it goes; the neighbour stays.
+TEST(FlatEars, AnEarOnTopOfItsNeighbourGoesEvenAtACorner) {
+  TriangleMesh mesh = disk_with_ear(0.02);
+  const Triangle ear = mesh.triangles.back();
+  const Vec3 neighbour = mesh.vertices[ear[0]];
+  mesh.vertices.back() = neighbour + Vec3{1e-30, 0, 0};
+  std::vector<bool> kept(mesh.vertices.size(), false);
+  kept.back() = true;
+  EXPECT_EQ(measure_quality(mesh).angle_min_deg, 0);
+  EXPECT_EQ(remove_flat_ears(mesh, kept), 1u);
+  EXPECT_EQ(mesh.vertices[ear[0]], neighbour);
+  repair_mesh(mesh);
+  EXPECT_TRUE(same_topology(analyze_topology(mesh), analyze_topology(testing::disk(4, 12))));
+  EXPECT_GT(measure_quality(mesh).angle_min_deg, 10);
+}
+
 TEST(FlatEars, CornersEarsThatAreNotFlatAndLoneTrianglesStay) {
   TriangleMesh at_corner = disk_with_ear(0.02);
   std::vector<bool> kept(at_corner.vertices.size(), false);

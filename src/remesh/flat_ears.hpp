@@ -16,10 +16,12 @@
 namespace cvtmesh {
 
 // Removes, until none is left, every ear whose angle at its vertex is at least 160°, unless that
-// vertex is `kept` (corners). Such an ear's smallest angle is under 10°, and its vertex lies
-// within 0.09 chord lengths of the chord: the height |ab||ac| sin θ / |bc| is at most
-// sin 20° (|ab| + |ac|)² / (4 |bc|), and |bc| ≥ cos 10° (|ab| + |ac|). The removed vertices are
-// left unreferenced. Returns how many ears were removed. Sequential, in triangle order.
+// vertex is `kept` (corners); and every ear whose vertex lies on top of one of its neighbours
+// (nearer than 1e-12 times its third edge: no area), even where that vertex is kept. Such an
+// ear's smallest angle is under 10°, and its vertex lies within 0.09 chord lengths of the chord:
+// the height |ab||ac| sin θ / |bc| is at most sin 20° (|ab| + |ac|)² / (4 |bc|), and |bc| ≥ cos 10°
+// (|ab| + |ac|). The removed vertices are left unreferenced. Returns how many ears were removed.
+// Sequential, in triangle order.
 std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept);
 
 }  // namespace cvtmesh
