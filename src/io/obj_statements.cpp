@@ -32,7 +32,9 @@ std::string obj_for_cgal(std::istream& in) {
   const auto emit = [&] {
     const std::string k = keyword(statement);
     if (k == "l") return;
-    out += k == "f" ? single_spaced(statement) : statement;
+    // Spaces, single or not, CGAL's reader takes; other blanks between corners it does not.
+    const bool blanks = statement.find_first_of("\t\v\f") != std::string::npos;
+    out += k == "f" && blanks ? single_spaced(statement) : statement;
     out += '\n';
   };
   while (std::getline(in, line)) {
