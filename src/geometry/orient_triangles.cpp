@@ -86,9 +86,13 @@ std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh) {
   return flips;
 }
 
+void flip_triangles(TriangleMesh& mesh, const std::vector<std::size_t>& triangles) {
+  for (const std::size_t t : triangles) std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+}
+
 std::size_t orient_consistently(TriangleMesh& mesh) {
   const std::vector<std::size_t> flips = triangles_to_flip(mesh);
-  for (const std::size_t t : flips) std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+  flip_triangles(mesh, flips);
   return flips.size();
 }
 

@@ -17,7 +17,10 @@ namespace cvtmesh {
 // A patch that no orientation makes consistent (a Möbius strip) is left as it is. Sorted.
 std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh);
 
-// Flips those triangles (corners 1 and 2 swap); returns how many.
+// Flips the given triangles: their corners 1 and 2 swap.
+void flip_triangles(TriangleMesh& mesh, const std::vector<std::size_t>& triangles);
+
+// Flips triangles_to_flip(mesh); returns how many.
 std::size_t orient_consistently(TriangleMesh& mesh);
 
 }  // namespace cvtmesh

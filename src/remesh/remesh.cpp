@@ -62,7 +62,7 @@ RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {
   // other way round is remeshed as repair_mesh orients it (geometry/orient_triangles.hpp).
   if (const std::vector<std::size_t> flips = triangles_to_flip(input); !flips.empty()) {
     TriangleMesh oriented = input;
-    for (const std::size_t t : flips) std::swap(oriented.triangles[t][1], oriented.triangles[t][2]);
+    flip_triangles(oriented, flips);
     return remesh(oriented, settings);
   }
   // Issue 22: the work is done on the input scaled by a power of two to about unit size, and

@@ -60,18 +60,18 @@ std::pair<int, bool> rank(const RemeshResult& r) {
   return {topology_kept(r), !r.mesh.triangles.empty()};
 }
 
-// Of `best` and a remesh `redo` of the same input, the one that keeps the topology better
-// (`best` on a tie). Both runs' work is counted in the one returned: a redo not taken counts as
-// topology control's and extraction's time, a redo taken has the time and the evaluations of
-// the runs before it added to its own.
-UnitRemesh better_of(UnitRemesh best, UnitRemesh redo) {
+// Keeps in `best` the one of `best` and a remesh `redo` of the same input that keeps the
+// topology better (`best` on a tie); returns whether that is `redo`. Both runs' work is counted
+// in the one kept: a redo not taken counts as topology control's and extraction's time, a redo
+// taken has the time and the evaluations of the runs before it added to its own.
+bool take_better(UnitRemesh& best, UnitRemesh redo) {
   RemeshResult& r = best.result;
   RemeshResult& s = redo.result;
   const double redone = seconds_of(s);
   if (rank(s) <= rank(r)) {
     r.seconds_topology += redone;
     r.seconds_extraction += redone;
-    return best;
+    return false;
   }
   s.seconds_topology = r.seconds_topology + redone;
   s.iterations += r.iterations;
@@ -80,7 +80,8 @@ UnitRemesh better_of(UnitRemesh best, UnitRemesh redo) {
   s.seconds_rcvt += r.seconds_rcvt;
   s.seconds_ccvt += r.seconds_ccvt;
   s.seconds_extraction += r.seconds_extraction;
-  return redo;
+  best = std::move(redo);
+  return true;
 }
 
 }  // namespace
@@ -105,9 +106,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
     if (!dropped.empty()) second = retried(input, plain, start);
     if (second) {
       second->result.feature_edges_dropped = std::move(dropped);
-      const bool taken = rank(second->result) > rank(best.result);
-      best = better_of(std::move(best), std::move(*second));
-      if (taken) used = plain;
+      if (take_better(best, std::move(*second))) used = plain;
     }
   }
   // Then even sizes, where the topology is still lost: parts thinner than the even edge
@@ -127,7 +126,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   if (std::optional<UnitRemesh> third = retried(input, adapted, start)) {
     third->result.sizes_adapted = true;
     third->result.feature_edges_dropped = best.result.feature_edges_dropped;
-    best = better_of(std::move(best), std::move(*third));
+    take_better(best, std::move(*third));
   }
   // Last, the count grows, as the paper's rule lets it for the topology alone (§4.4, issue 18
   // item 2): where neither topology control's seeds nor the sizes kept it at the count asked
@@ -145,7 +144,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
     if (!next) continue;
     next->result.count_grown = more.vertices - asked;
     next->result.feature_edges_dropped = best.result.feature_edges_dropped;
-    best = better_of(std::move(best), std::move(*next));
+    take_better(best, std::move(*next));
   }
   return best;
 }
