@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <sstream>
 
 #include "cvtmesh/io.hpp"
 #include "support/shapes.hpp"
@@ -227,6 +228,35 @@ TEST(Cli, RepairWritesCleanMeshAndReportsWhatItDid) {
   const TriangleMesh out = read_mesh(dir / "out.ply");
   EXPECT_EQ(out.triangles.size(), 1u);
   EXPECT_EQ(out.vertices.size(), 3u);
+}
+
+TEST(Cli, RemeshOfAPartWhoseCopiesOfAVertexDifferByRoundingIsClosed) {
+  // An STL-like soup of a box, each triangle with its own corners, written where 0 was meant as
+  // up to 6e-17 (cos 90° as an exporter computes it): as stored, 48 separate triangles. The
+  // remesher sees the closed box, and says what it merged.
+  const TriangleMesh box = cube(2);
+  std::ostringstream obj;
+  obj.precision(17);
+  for (std::size_t t = 0; t < box.triangles.size(); ++t)
+    for (const Vec3& p : box.corners(t)) {
+      const auto rounded = [&](double c) { return c == 0 ? 6e-17 * (t % 3) : c; };
+      obj << "v " << rounded(p.x) << ' ' << rounded(p.y) << ' ' << rounded(p.z) << '\n';
+    }
+  for (std::size_t t = 0; t < box.triangles.size(); ++t)
+    obj << "f " << 3 * t + 1 << ' ' << 3 * t + 2 << ' ' << 3 * t + 3 << '\n';
+  TempDir dir;
+  write_file(dir / "box.obj", obj.str());
+  const CliRun r = run_cli(dir, "remesh --json --quiet --vertices 400 " + quoted(dir / "box.obj") +
+                                    " " + quoted(dir / "out.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("nearly equal"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["components"], 1);
+  EXPECT_EQ(j["boundary_loops"], 0);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_EQ(j["nonmanifold_edges"], 0);
+  EXPECT_EQ(j["same_topology"], true);
+  EXPECT_GE(j["angle_min_deg"].get<double>(), 30);
 }
 
 TEST(Cli, RepairNeverWritesOverItsInput) {

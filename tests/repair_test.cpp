@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
@@ -92,6 +93,64 @@ TEST(Repair, MergesExactlyDuplicateVerticesAndStitchesTheSurface) {
   EXPECT_EQ(t.components, 1u);
   EXPECT_EQ(t.euler_characteristic, 2);
   EXPECT_NEAR(surface_area(soup), surface_area(indexed), 1e-12);
+}
+
+// A soup of `mesh`'s triangles whose copies of each vertex differ by `offset` times a per-copy
+// factor in -1..1, as a CAD exporter's rounding leaves them: every copy at its own position.
+TriangleMesh cracked_soup(const TriangleMesh& mesh, double offset) {
+  TriangleMesh soup;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Index base = static_cast<Index>(soup.vertices.size());
+    for (const Vec3& p : mesh.corners(t)) {
+      const double f = static_cast<double>(soup.vertices.size() % 7) / 3 - 1;
+      soup.vertices.push_back(p + Vec3{f * offset, -f * offset, 0.5 * f * offset});
+    }
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  return soup;
+}
+
+TEST(Repair, MergesCopiesOfAVertexThatDifferByRounding) {
+  // A cube exported with coordinates off by up to 2e-16 (where 0 or 1 was meant) is closed once
+  // its copies merge: no crack along its edges, the same area. As it is, it is 108 triangles
+  // apart (a cube(3) has 108).
+  const TriangleMesh box = cube(3);
+  TriangleMesh soup = cracked_soup(box, 2e-16);
+  ASSERT_EQ(analyze_topology(soup).components, box.triangles.size());
+  const RepairReport r = repair_mesh(soup);
+  EXPECT_EQ(soup.vertices.size(), box.vertices.size());
+  EXPECT_EQ(r.duplicate_vertices_merged, 3 * box.triangles.size() - box.vertices.size());
+  EXPECT_GT(r.nearly_equal_vertices_merged, r.duplicate_vertices_merged / 2);
+  EXPECT_NE(r.summary().find("nearly equal"), std::string::npos);
+  const TopologyReport t = analyze_topology(soup);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.boundary_loops, 0u);
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_NEAR(surface_area(soup), surface_area(box), 1e-12);
+}
+
+TEST(Repair, KeepsVerticesAMillionthApartAndNearCopiesWhoseMergeWouldPinch) {
+  // A millionth of the size is geometry, not rounding: nothing merges.
+  const TriangleMesh box = cube(2);
+  TriangleMesh apart = cracked_soup(box, 1e-6);
+  const RepairReport far = repair_mesh(apart);
+  EXPECT_EQ(far.duplicate_vertices_merged, 0u);
+  EXPECT_EQ(apart.triangles.size(), box.triangles.size());
+  // Two spheres touching at a point, their vertices there two units in the last place apart: a
+  // merge would make a non-manifold vertex, so they stay apart, as exactly equal ones do.
+  const TriangleMesh a = icosphere(1);
+  const Vec3 tip = a.vertices[0];
+  TriangleMesh b = transformed(icosphere(1), 1.0, 2 * tip);
+  const auto touching = std::find(b.vertices.begin(), b.vertices.end(), tip);
+  ASSERT_NE(touching, b.vertices.end());
+  touching->x = std::nextafter(std::nextafter(tip.x, 2.0), 2.0);
+  TriangleMesh both = concatenate(a, b);
+  const RepairReport r = repair_mesh(both);
+  EXPECT_EQ(r.duplicate_vertices_merged, 0u);
+  EXPECT_EQ(r.duplicate_vertices_kept_apart, 1u);
+  EXPECT_TRUE(analyze_topology(both).is_manifold());
+  EXPECT_EQ(analyze_topology(both).components, 2u);
 }
 
 TEST(Repair, DropsZeroAreaTriangles) {

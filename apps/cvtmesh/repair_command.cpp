@@ -32,6 +32,8 @@ int run_repair(const RepairOptions& o) {
   if (o.json) {
     auto json = mesh_json(topology, measure_quality(mesh));
     json["duplicate_vertices_merged"] = repairs.duplicate_vertices_merged;
+    json["nearly_equal_vertices_merged"] = repairs.nearly_equal_vertices_merged;
+    json["duplicate_vertices_kept_apart"] = repairs.duplicate_vertices_kept_apart;
     json["degenerate_triangles_removed"] = repairs.degenerate_triangles_removed;
     json["duplicate_triangles_removed"] = repairs.duplicate_triangles_removed;
     json["unreferenced_vertices_removed"] = repairs.unreferenced_vertices_removed;

@@ -11,7 +11,10 @@
 namespace cvtmesh {
 
 struct RepairReport {
-  std::size_t duplicate_vertices_merged = 0;  // vertices with exactly equal coordinates
+  // Vertices at the same point: equal coordinates, or nearly equal (within 1e-12 of the larger of
+  // the bounding box diagonal and the largest coordinate), merged into the first of them.
+  std::size_t duplicate_vertices_merged = 0;
+  std::size_t nearly_equal_vertices_merged = 0;  // of those, the ones not exactly equal
   // Duplicates not merged, because the merge would have made a non-manifold edge or vertex.
   std::size_t duplicate_vertices_kept_apart = 0;
   std::size_t degenerate_triangles_removed = 0;  // zero area (repeated or collinear corners)
@@ -33,14 +36,14 @@ struct RepairReport {
 
 inline constexpr Index kRemovedVertex = ~Index{0};
 
-// Applies, in this order: merge exactly-duplicate vertices where that stitches the surface and
-// makes no edge or vertex non-manifold (the others are kept apart and counted), drop zero-area
-// triangles (exact collinearity test), drop duplicate triangles (first one kept), drop unreferenced
-// vertices, flip the triangles listed the other way round from most of their patch (the
-// triangles joined by manifold edges; a patch no orientation makes consistent stays as it is).
-// Deterministic; the kept elements keep their relative order. `new_id`, when given, receives each
-// vertex's id in the repaired mesh: a merged duplicate's is that of the vertex it was merged into;
-// a removed vertex's is kRemovedVertex.
+// Applies, in this order: merge duplicate vertices (equal or nearly equal coordinates) where that
+// stitches the surface and makes no edge or vertex non-manifold (the others are kept apart and
+// counted), drop zero-area triangles (exact collinearity test), drop duplicate triangles (first one
+// kept), drop unreferenced vertices, flip the triangles listed the other way round from most of
+// their patch (the triangles joined by manifold edges; a patch no orientation makes consistent
+// stays as it is). Deterministic; the kept elements keep their relative order. `new_id`, when
+// given, receives each vertex's id in the repaired mesh: a merged duplicate's is that of the vertex
+// it was merged into; a removed vertex's is kRemovedVertex.
 RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id = nullptr);
 
 // Edges given in a mesh's vertex ids (feature edges read from a file), in the ids of the mesh

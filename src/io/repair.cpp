@@ -8,6 +8,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "geometry/manifold_defects.hpp"
+#include "geometry/near_points.hpp"
 #include "geometry/orient_triangles.hpp"
 
 namespace cvtmesh {
@@ -42,37 +43,34 @@ void compose(std::vector<Index>& first, const std::vector<Index>& second) {
     if (v != kRemovedVertex) v = second[v];
 }
 
-// Merges vertices with exactly equal coordinates where that stitches the mesh, as CGAL's
-// stitch_borders does: a group of equal vertices whose merge would leave a non-manifold edge or
-// vertex there stays apart (two parts that touch at a point or along an edge are not welded;
-// issue 18, diplodocus.off). Groups are merged all at once, then those at a defect that the merge
-// made are split again, until none is. Returns the vertices merged; `kept_apart` counts the
+// Merges vertices with equal coordinates, or within near_point_tolerance of one another, where
+// that stitches the mesh, as CGAL's stitch_borders does: a group whose merge would leave a
+// non-manifold edge or vertex there stays apart (two parts that touch at a point or along an edge
+// are not welded; issue 18, diplodocus.off). Groups are merged all at once, then those at a
+// defect that the merge made are split again, until none is. Returns the vertices merged;
+// `nearly_equal` counts those of them not exactly at their group's first vertex, `kept_apart` the
 // vertices of the groups left apart, less one each; `new_id`: each vertex's id after the merge.
-std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart,
-                                     std::vector<Index>& new_id) {
+std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& nearly_equal,
+                                     std::size_t& kept_apart, std::vector<Index>& new_id) {
   const auto& p = mesh.vertices;
-  std::vector<Index> order(p.size());
-  std::iota(order.begin(), order.end(), Index{0});
-  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) { return p[a] < p[b]; });
-  // Each run of equal points maps to its first vertex in file order (stable sort keeps it first).
-  std::vector<Index> representative(p.size());
+  // Each group maps to its first vertex in file order, whose position it takes.
+  const std::vector<Index> representative = near_point_groups(p, near_point_tolerance(p));
   std::vector<std::size_t> group_size(p.size(), 0);
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    const bool same_as_previous = i > 0 && p[order[i]] == p[order[i - 1]];
-    representative[order[i]] = same_as_previous ? representative[order[i - 1]] : order[i];
-    ++group_size[representative[order[i]]];
-  }
+  for (const Index r : representative) ++group_size[r];
   std::vector<bool> merging(p.size(), false);  // per representative
   bool any = false;
   for (std::size_t v = 0; v < p.size(); ++v)
     if (group_size[v] > 1) merging[v] = any = true;
-  kept_apart = 0;
+  kept_apart = nearly_equal = 0;
   if (!any) return 0;
   auto target = [&](Index v) { return merging[representative[v]] ? representative[v] : v; };
   for (;;) {
     std::vector<Triangle> merged = mesh.triangles;
     for (Triangle& t : merged)
       for (Index& v : t) v = target(v);
+    // A triangle with two nearly equal corners collapses; the repair drops it.
+    std::erase_if(merged,
+                  [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; });
     // Boundary edges and folds are allowed: only a non-manifold edge or vertex splits a group.
     const std::vector<bool> bad = find_manifold_defects(p.size(), merged, {}, false).vertex;
     bool split = false;
@@ -87,7 +85,10 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& kept_apart
   std::vector<bool> keep(p.size(), true);
   std::size_t count = 0;
   for (std::size_t v = 0; v < p.size(); ++v)
-    if (target(static_cast<Index>(v)) != v) keep[v] = false, ++count;
+    if (const Index to = target(static_cast<Index>(v)); to != v) {
+      keep[v] = false, ++count;
+      nearly_equal += p[to] != p[v];
+    }
   if (count == 0) return 0;
   for (Triangle& t : mesh.triangles)
     for (Index& v : t) v = target(v);
@@ -149,6 +150,9 @@ std::string RepairReport::summary() const {
     s += std::to_string(n) + " " + what;
   };
   add(duplicate_vertices_merged, "duplicate vertices merged");
+  if (nearly_equal_vertices_merged > 0)
+    s += " (" + std::to_string(nearly_equal_vertices_merged) +
+         " of them nearly equal: within 1e-12 of the model's size)";
   add(duplicate_vertices_kept_apart,
       "duplicate vertices kept apart (merging them would make the mesh non-manifold)");
   add(degenerate_triangles_removed, "zero-area triangles removed");
@@ -162,8 +166,8 @@ RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id) {
   RepairReport r;
   std::vector<Index> ids(mesh.vertices.size());
   std::iota(ids.begin(), ids.end(), Index{0});
-  r.duplicate_vertices_merged =
-      merge_duplicate_vertices(mesh, r.duplicate_vertices_kept_apart, ids);
+  r.duplicate_vertices_merged = merge_duplicate_vertices(mesh, r.nearly_equal_vertices_merged,
+                                                         r.duplicate_vertices_kept_apart, ids);
   r.degenerate_triangles_removed = remove_degenerate_triangles(mesh);
   r.duplicate_triangles_removed = remove_duplicate_triangles(mesh);
   r.unreferenced_vertices_removed = remove_unreferenced_vertices(mesh, ids);
