@@ -1,9 +1,10 @@
 #include "remesh/flat_ears.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "features/edge_uses.hpp"
+#include "geometry/triangle_sides.hpp"
 
 namespace cvtmesh {
 
@@ -15,13 +16,30 @@ const double kFlatEarCos = std::cos(160 * M_PI / 180);
 // A vertex this close to a neighbour, relative to the ear's third edge, lies on top of it.
 constexpr double kOnTop = 1e-12;
 
-// How many triangles use each edge (features/edge_uses lists the uses; here they are counted
-// down as ears go).
-using EdgeCounts = std::map<Edge, int>;
+// How many triangles use each edge, counted down as ears go: the mesh's edges sorted (from its
+// sorted sides), with a count each.
+class EdgeCounts {
+ public:
+  explicit EdgeCounts(const TriangleMesh& mesh) {
+    for (const TriangleSide& side : sorted_sides(mesh)) {
+      const Edge e{side.lo, side.hi};
+      if (edges_.empty() || edges_.back() != e) edges_.push_back(e), uses_.push_back(0);
+      ++uses_.back();
+    }
+  }
+  int at(const Edge& e) const { return uses_[slot(e)]; }
+  void remove(const Triangle& t) {
+    for (int k = 0; k < 3; ++k) --uses_[slot(edge_of(t[k], t[(k + 1) % 3]))];
+  }
 
-void count(EdgeCounts& uses, const Triangle& t, int by) {
-  for (int k = 0; k < 3; ++k) uses[edge_of(t[k], t[(k + 1) % 3])] += by;
-}
+ private:
+  std::size_t slot(const Edge& e) const {
+    return static_cast<std::size_t>(std::lower_bound(edges_.begin(), edges_.end(), e) -
+                                    edges_.begin());
+  }
+  std::vector<Edge> edges_;
+  std::vector<int> uses_;
+};
 
 // Whether vertex a of triangle t lies on top of its vertex n: nearer than kOnTop times the
 // triangle's edge across from a.
@@ -58,12 +76,10 @@ int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeCount
 }  // namespace
 
 std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept) {
-  EdgeCounts uses;
+  EdgeCounts uses(mesh);
   std::vector<int> triangles_at(mesh.vertices.size(), 0);
-  for (const Triangle& t : mesh.triangles) {
-    count(uses, t, 1);
+  for (const Triangle& t : mesh.triangles)
     for (const Index v : t) ++triangles_at[v];
-  }
   std::vector<bool> removed(mesh.triangles.size(), false);
   std::size_t ears = 0;
   // A removal can make an ear of the triangle across the chord: sweep again until none is found.
@@ -72,7 +88,7 @@ std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept) 
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
       if (removed[i] || flat_ear_corner(mesh, mesh.triangles[i], uses, triangles_at, kept) < 0)
         continue;
-      count(uses, mesh.triangles[i], -1);
+      uses.remove(mesh.triangles[i]);
       for (const Index v : mesh.triangles[i]) --triangles_at[v];
       removed[i] = true;
       ++ears;
