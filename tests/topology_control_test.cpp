@@ -18,6 +18,7 @@
 #include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/curve_projector.hpp"
+#include "features/edge_uses.hpp"
 #include "features/feature_seeds.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/flip_links.hpp"
@@ -315,22 +316,85 @@ TriangleMesh tip_with_corner_at(const Vec3& corner) {
 
 TEST(CloseCornerTips, ACornerWithoutTrianglesGetsTheOneItsLinksBound) {
   TriangleMesh m = tip_with_corner_at({1, 0.5, 0});
-  EXPECT_EQ(close_corner_tips(m, {3}, {{0, 3}, {1, 3}}), 1u);
+  EXPECT_EQ(close_corner_wedges(m, {3}, {{0, 3}, {1, 3}}), 1u);
   ASSERT_EQ(m.triangles.size(), 2u);
-  EXPECT_EQ(m.triangles[1], (Triangle{1, 0, 3}));  // runs edge (0, 1) the other way round
+  // It runs edge (0, 1) the other way round: (1, 0, 3), from whichever corner.
+  Triangle added = m.triangles[1];
+  std::rotate(added.begin(), std::find(added.begin(), added.end(), Index{1}), added.end());
+  EXPECT_EQ(added, (Triangle{1, 0, 3}));
   EXPECT_TRUE(analyze_topology(m).is_manifold());
-  EXPECT_EQ(close_corner_tips(m, {3}, {{0, 3}, {1, 3}}), 0u);  // it has one now
+  EXPECT_EQ(close_corner_wedges(m, {3}, {{0, 3}, {1, 3}}), 0u);  // it has one now
 }
 
 TEST(CloseCornerTips, NoTriangleThatFoldsOrWithoutTwoLinksOrOnAnInnerEdge) {
   TriangleMesh folded = tip_with_corner_at({-2, 0.5, 0});  // on the triangle's side
-  EXPECT_EQ(close_corner_tips(folded, {3}, {{0, 3}, {1, 3}}), 0u);
+  EXPECT_EQ(close_corner_wedges(folded, {3}, {{0, 3}, {1, 3}}), 0u);
   TriangleMesh one_link = tip_with_corner_at({1, 0.5, 0});
-  EXPECT_EQ(close_corner_tips(one_link, {3}, {{0, 3}}), 0u);
+  EXPECT_EQ(close_corner_wedges(one_link, {3}, {{0, 3}}), 0u);
   TriangleMesh inner = tip_with_corner_at({1, 0.5, 0});
   inner.vertices.push_back({1, 0.5, 1});
   inner.triangles.push_back({1, 0, 4});  // edge (0, 1) has two triangles already
-  EXPECT_EQ(close_corner_tips(inner, {3}, {{0, 3}, {1, 3}}), 0u);
+  EXPECT_EQ(close_corner_wedges(inner, {3}, {{0, 3}, {1, 3}}), 0u);
+}
+
+void expect_oriented_disc(const TriangleMesh& m) {
+  const TopologyReport t = analyze_topology(m);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.boundary_loops, 1u);
+  EXPECT_EQ(t.euler_characteristic, 1);
+}
+
+TEST(CloseCornerTips, AWedgeOfMissingLinksIsZippedUpToTheBoundaryAcrossIt) {
+  // A 6° wedge: corner 0, three seeds along each side (1-3 and 4-6), none in a triangle, and
+  // the output's triangle (3, 6, 7) where it is wide enough; its edge (3, 6) is the boundary
+  // across the wedge.
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0},     {1, 0.05, 0}, {2, 0.1, 0},   {3, 0.15, 0},
+                {1, -0.05, 0}, {2, -0.1, 0}, {3, -0.15, 0}, {4, 0, 0}};
+  m.triangles = {{3, 6, 7}};
+  const std::vector<Edge> links = {{0, 1}, {1, 2}, {2, 3}, {0, 4}, {4, 5}, {5, 6}};
+  EXPECT_EQ(close_corner_wedges(m, {0}, links), 5u);
+  expect_oriented_disc(m);
+  EXPECT_NEAR(surface_area(m), 0.5 * 3 * 0.3 + 0.5 * 0.3 * 1, 1e-12);
+  // Every link is an edge now.
+  const std::vector<Edge> edges = sorted_edges(m);
+  for (const Edge& e : links) EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), e));
+  // The boundary across may pass a vertex of neither side: 8, whose triangles (3, 8, 7) and
+  // (8, 6, 7) are the output beyond the wedge; the last triangle is (3, 8, 6).
+  TriangleMesh bent = m;
+  bent.triangles = {{3, 8, 7}, {8, 6, 7}};
+  bent.vertices.push_back({3.1, 0, 0});
+  EXPECT_EQ(close_corner_wedges(bent, {0}, links), 6u);
+  expect_oriented_disc(bent);
+  EXPECT_NEAR(surface_area(bent), surface_area(m), 1e-12);
+  // Not past a vertex with three links.
+  TriangleMesh branching = m;
+  branching.triangles.resize(1);
+  std::vector<Edge> three = links;
+  three.push_back({2, 7});
+  EXPECT_EQ(close_corner_wedges(branching, {0}, three), 0u);
+}
+
+TEST(HardCases, ASliverWithTipsOf7And10DegreesKeepsItsTips) {
+  // One triangle 27 long and under 2 wide: at 500 vertices, its two tips are narrower than the
+  // spacing for several spacings, where no Voronoi vertex of seeds on the two sides falls on the
+  // surface. The output used to stop where it was wide enough (0 of its 2 corners; the
+  // Hausdorff distance 1.8% of the diagonal).
+  TriangleMesh sliver;
+  sliver.vertices = {{10, 20, 30}, {1, 5, 10}, {5, 15, 21}};
+  sliver.triangles = {{0, 1, 2}};
+  RemeshSettings s;
+  s.vertices = 500;
+  s.hausdorff = HausdorffSettings{};
+  const RemeshResult r = remesh(sliver, s);
+  expect_topology_kept(r, sliver);
+  for (const Vec3& tip : {sliver.vertices[0], sliver.vertices[1]})
+    EXPECT_NE(std::find(r.mesh.vertices.begin(), r.mesh.vertices.end(), tip),
+              r.mesh.vertices.end());
+  ASSERT_TRUE(r.hausdorff);
+  EXPECT_LT(r.hausdorff->max_pct(), 0.2);
 }
 
 // The last step's removal of defects, as a pass over the whole mesh per round of removals: the

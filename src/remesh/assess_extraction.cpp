@@ -120,7 +120,14 @@ Assessment assess(const MendContext& m, const SpecialEdges& special, const Trian
   for (std::size_t k = 0; k < a.missing.size(); ++k)
     if (!last[k]) unmade.push_back(a.missing[k].seeds);
   a.links_flipped = cut.size() - unmade.size();
-  a.tips_closed = close_corner_tips(a.finished, constraints.corner_seed, unmade);
+  a.tips_closed = close_corner_wedges(a.finished, constraints.corner_seed, unmade);
+  if (a.tips_closed > 0) {
+    // The links along the wedges closed are there now.
+    const std::vector<Edge> edges = sorted_edges(a.finished);
+    std::erase_if(a.missing, [&](const FeatureLink& link) {
+      return std::binary_search(edges.begin(), edges.end(), link.seeds);
+    });
+  }
   const TopologyReport t = analyze_topology(a.finished);
   const TopologyReport& in = m.surface_topology;
   if (in.is_manifold()) {

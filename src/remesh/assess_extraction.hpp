@@ -31,7 +31,7 @@ SpecialEdges special_edges(const MendContext& m);
 // no well-shaped flip makes (left to the seeds), and whether its topology is the surface's.
 // Finished means: the cut links flipped in where one edge flip makes them with no angle under
 // 30°; the links still missing then flipped in with none under 15°; and corners left without a
-// triangle at a boundary tip given theirs (close_corner_tips).
+// triangle at a boundary tip given theirs (close_corner_wedges).
 struct Assessment {
   TriangleMesh finished;  // all the flips made, and the tips closed
   std::vector<FeatureLink> missing;

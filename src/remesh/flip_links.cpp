@@ -1,6 +1,10 @@
 #include "remesh/flip_links.hpp"
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
 
 #include "geometry/triangles_around.hpp"
 #include "quality/min_shape.hpp"
@@ -70,6 +74,91 @@ bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b, double min_
   return false;
 }
 
+// Longest chain of missing links followed from a corner, and longest bridge across a wedge
+// (close_corner_wedges): far past any wedge seen, short enough that a wrong turn costs little.
+constexpr std::size_t kMaxChain = 64;
+constexpr std::size_t kMaxBridge = 3;
+
+// The triangles on edge (a, b).
+std::vector<Index> triangles_on(const TriangleMesh& m, const VertexTriangles& at, Index a,
+                                Index b) {
+  std::vector<Index> on;
+  for (const Index t : at(a))
+    if (position(m.triangles[t], b) != 3) on.push_back(t);
+  return on;
+}
+
+// The vertices joined to u by an edge of one triangle (the boundary).
+std::vector<Index> boundary_neighbours(const TriangleMesh& m, const VertexTriangles& at, Index u) {
+  std::vector<Index> found;
+  for (const Index t : at(u))
+    for (const Index w : m.triangles[t])
+      if (w != u && std::find(found.begin(), found.end(), w) == found.end() &&
+          triangles_on(m, at, u, w).size() == 1)
+        found.push_back(w);
+  return found;
+}
+
+// The paths from a to b along the boundary, one each way round from a, of at most `longest`
+// edges and through no vertex of `avoid` (a and b aside), each as its vertices from a to b.
+std::vector<std::vector<Index>> boundary_paths(const TriangleMesh& m, const VertexTriangles& at,
+                                               Index a, Index b, const std::set<Index>& avoid,
+                                               std::size_t longest) {
+  std::vector<std::vector<Index>> paths;
+  for (const Index first : boundary_neighbours(m, at, a)) {
+    std::vector<Index> path{a, first};
+    while (path.back() != b && path.size() <= longest && !avoid.contains(path.back())) {
+      const std::vector<Index> next = boundary_neighbours(m, at, path.back());
+      if (next.size() != 2) break;  // not along one loop
+      path.push_back(next[0] == path[path.size() - 2] ? next[1] : next[0]);
+    }
+    if (path.back() == b) paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+// The triangles that close the wedge between chains A and B (from the corner, A[0] = B[0], to
+// the first vertices with triangles) and the boundary `bridge` from A's end to B's: a zipper
+// between the chains (each step to the shorter rung), then a fan from A's end over the bridge's
+// inner vertices. None when they would make an edge the mesh has, or fold against the bridge's
+// triangle.
+std::optional<std::vector<Triangle>> zipped_wedge(const TriangleMesh& m, const VertexTriangles& at,
+                                                  const std::vector<Index>& A,
+                                                  const std::vector<Index>& B,
+                                                  const std::vector<Index>& bridge) {
+  // The new edges inside the loop must be new to the mesh: the last rung and the fan's.
+  if (bridge.size() > 2 && !triangles_on(m, at, A.back(), B.back()).empty()) return std::nullopt;
+  for (std::size_t k = 2; k + 1 < bridge.size(); ++k)
+    if (!triangles_on(m, at, A.back(), bridge[k]).empty()) return std::nullopt;
+  const std::vector<Index> across = triangles_on(m, at, bridge[0], bridge[1]);
+  if (across.size() != 1) return std::nullopt;
+  std::vector<Triangle> wedge{{A[0], A[1], B[1]}};
+  for (std::size_t i = 1, j = 1; i + 1 < A.size() || j + 1 < B.size();) {
+    const bool along_a = j + 1 == B.size() ||
+                         (i + 1 < A.size() && distance(m.vertices[A[i + 1]], m.vertices[B[j]]) <=
+                                                  distance(m.vertices[A[i]], m.vertices[B[j + 1]]));
+    wedge.push_back(along_a ? Triangle{A[i], A[i + 1], B[j]} : Triangle{A[i], B[j + 1], B[j]});
+    (along_a ? i : j) += 1;
+  }
+  for (std::size_t k = 1; k + 1 < bridge.size(); ++k)
+    wedge.push_back({A.back(), bridge[k], bridge[k + 1]});
+  // Each triangle in the order of the wedge's loop (A out, across, B back), which runs the
+  // bridge's first edge the way its triangle in the mesh must not (else all turn round); every
+  // new triangle must face as that one does.
+  std::map<Index, std::size_t> place;
+  for (std::size_t k = 0; k < A.size(); ++k) place[A[k]] = k;
+  for (std::size_t k = 1; k + 1 < bridge.size(); ++k) place[bridge[k]] = A.size() + k;
+  for (std::size_t k = 1; k < B.size(); ++k) place[B[k]] = A.size() + bridge.size() + B.size() - k;
+  for (Triangle& t : wedge)
+    std::sort(t.begin(), t.end(), [&](Index x, Index y) { return place[x] < place[y]; });
+  const Triangle& old = m.triangles[across[0]];
+  if (old[(position(old, bridge[0]) + 1) % 3] == bridge[1])
+    for (Triangle& t : wedge) std::swap(t[1], t[2]);
+  for (const Triangle& t : wedge)
+    if (!(dot(normal(m, t), normal(m, old)) > 0)) return std::nullopt;
+  return wedge;
+}
+
 }  // namespace
 
 std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links,
@@ -82,30 +171,47 @@ std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& lin
   return flipped;
 }
 
-std::size_t close_corner_tips(TriangleMesh& mesh, const std::vector<Index>& corners,
-                              const std::vector<Edge>& links) {
+std::size_t close_corner_wedges(TriangleMesh& mesh, const std::vector<Index>& corners,
+                                const std::vector<Edge>& links) {
   VertexTriangles at(mesh);
+  std::map<Index, std::vector<Index>> partners;  // per vertex, the other ends of its links
+  for (const auto& [a, b] : links) partners[a].push_back(b), partners[b].push_back(a);
+  const auto unused = [&](Index v) { return at(v).empty(); };
   std::size_t added = 0;
   for (const Index corner : corners) {
-    if (!at(corner).empty()) continue;
-    std::vector<Index> ends;  // the other ends of the corner's links
-    for (const auto& [a, b] : links)
-      if (a == corner || b == corner) ends.push_back(a == corner ? b : a);
-    if (ends.size() != 2) continue;
-    std::vector<Index> on_edge;  // the triangles on edge (ends[0], ends[1])
-    for (const Index t : at(ends[0]))
-      if (position(mesh.triangles[t], ends[1]) != 3) on_edge.push_back(t);
-    if (on_edge.size() != 1) continue;
-    // The new triangle runs the shared edge the other way round, as orientation requires.
-    const Triangle& old = mesh.triangles[on_edge[0]];
-    const bool forward = old[(position(old, ends[0]) + 1) % 3] == ends[1];
-    const Triangle tip =
-        forward ? Triangle{ends[1], ends[0], corner} : Triangle{ends[0], ends[1], corner};
-    if (!(dot(normal(mesh, tip), normal(mesh, old)) > 0)) continue;
-    const auto t = static_cast<Index>(mesh.triangles.size());
-    mesh.triangles.push_back(tip);
-    for (const Index v : tip) at.add(v, t);
-    ++added;
+    const auto found = partners.find(corner);
+    if (!unused(corner) || found == partners.end() || found->second.size() != 2) continue;
+    // Each side's chain of missing links, from the corner to the first vertex with triangles.
+    std::array<std::vector<Index>, 2> side;
+    bool chained = true;
+    for (int k = 0; k < 2 && chained; ++k) {
+      side[k] = {corner, found->second[k]};
+      while (chained && unused(side[k].back())) {
+        const auto next = partners.find(side[k].back());
+        chained = next != partners.end() && next->second.size() == 2 && side[k].size() < kMaxChain;
+        if (chained) {
+          const Index before = side[k][side[k].size() - 2];
+          side[k].push_back(next->second[0] == before ? next->second[1] : next->second[0]);
+        }
+      }
+    }
+    if (!chained) continue;
+    // The output's boundary across the wedge, between the two chains' ends: the way round from
+    // A's end that reaches B's in at most kMaxBridge edges, through vertices of neither chain.
+    std::set<Index> in_chains(side[0].begin(), side[0].end());
+    in_chains.insert(side[1].begin() + 1, side[1].end());
+    if (in_chains.size() != side[0].size() + side[1].size() - 1) continue;  // chains that meet
+    std::optional<std::vector<Triangle>> wedge;
+    for (const std::vector<Index>& bridge :
+         boundary_paths(mesh, at, side[0].back(), side[1].back(), in_chains, kMaxBridge))
+      if ((wedge = zipped_wedge(mesh, at, side[0], side[1], bridge))) break;
+    if (!wedge) continue;
+    for (const Triangle& t : *wedge) {
+      const auto id = static_cast<Index>(mesh.triangles.size());
+      mesh.triangles.push_back(t);
+      for (const Index v : t) at.add(v, id);
+    }
+    added += wedge->size();
   }
   return added;
 }

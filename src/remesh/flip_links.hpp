@@ -1,7 +1,7 @@
 // The last resort for feature links the restricted Delaunay triangulation still misses after
 // topology control (paper §4.4): where one edge flip makes the link, flip it, as constrained
 // Delaunay meshers recover a segment; where a corner at a boundary tip has no triangle, add the
-// one its two links bound. In a wedge between two curves narrower than a triangle,
+// triangles its links bound. In a wedge between two curves narrower than a triangle,
 // no placement of seeds makes every link Delaunay; a flip there costs no more angle than the
 // wedge already does.
 #pragma once
@@ -22,11 +22,16 @@ std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& lin
 // At a sharp tip of a boundary, the Voronoi vertex of the corner seed and the seeds next to it
 // on the two curves can fall past the tip's edges, off the surface: the restricted Delaunay
 // triangulation then has no triangle at the corner, and the output would lose it
-// (mech-holes-shark.off at 3k vertices). For each corner in `corners` that no triangle uses and
-// that has exactly two `links` (the missing ones), to a and b: where edge (a, b) has a single
-// triangle, and the corner lies on that edge's free side (the new triangle faces the way that
-// one does), triangle (a, b, corner) is added. Returns how many were.
-std::size_t close_corner_tips(TriangleMesh& mesh, const std::vector<Index>& corners,
-                              const std::vector<Edge>& links);
+// (mech-holes-shark.off at 3k vertices). In a wedge narrower still (under about 15°), no rung
+// between seeds on its two sides has a Voronoi vertex on the surface for several spacings: the
+// output stops where the wedge is wide enough, and its tip is cut off (a sliver of a triangle,
+// 7° at its tip, lost both tips at 500 vertices). For each corner in `corners` that no triangle
+// uses and that has exactly two `links` (the missing ones): each side's chain of missing links,
+// from the corner to the first vertex with triangles, and the boundary across the wedge between
+// those two vertices (at most 3 edges) bound the triangles added, a zipper between the chains,
+// where they fold nowhere against the boundary's triangle and make no edge the mesh has. Returns
+// how many triangles were added.
+std::size_t close_corner_wedges(TriangleMesh& mesh, const std::vector<Index>& corners,
+                                const std::vector<Edge>& links);
 
 }  // namespace cvtmesh

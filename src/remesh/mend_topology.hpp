@@ -27,7 +27,7 @@ struct MendReport {
   std::size_t islands = 0;        // seeds added in extra pieces of cells, and pieces not discs
   std::size_t refined = 0;        // seeds added where defects' Voronoi edges cross the surface
   std::size_t links_flipped = 0;  // links still missing after the rounds, made by an edge flip
-  std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_tips)
+  std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_wedges)
   int rounds = 0;                 // rounds that changed the seeds
   int polish_rounds = 0;          // polishing rounds over all the extractions after the first
 };
@@ -40,7 +40,7 @@ struct MendReport {
 // (polishing around the new seeds). Each extraction is finished as it would be returned: the
 // missing links flipped in where one edge flip makes them (flip_in_links; with no angle under
 // 30°, or, for links the seeds do not mend, 15°), and corners left without a triangle at a
-// boundary tip given theirs (close_corner_tips). Returns the best of these outputs, by the
+// boundary tip given theirs (close_corner_wedges). Returns the best of these outputs, by the
 // input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
 // links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
 // that round. Where the rounds end without the input's topology, up to 3 × `rounds` more start
