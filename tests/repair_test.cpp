@@ -43,6 +43,34 @@ TEST(Repair, KeepsApartDuplicatesWhoseMergeWouldMakeTheMeshNonManifold) {
   EXPECT_EQ(after.components, 2u);
 }
 
+TEST(Repair, MergesCopiesOfAPinchThatOnlyCloseSlitsInItsFans) {
+  // A hexagon around a centre stored twice (triangles 0-2 at copy 7, 3-5 at copy 8: slits along
+  // two spokes), and a triangle standing on copy 7 alone: 7 is a pinch of two fans already.
+  // Merging 8 into it closes the slits and leaves it two fans, no worse: merged (teapot.obj of a
+  // public test set). Two copies whose merge makes the pinch stay apart (the test above).
+  TriangleMesh m;
+  for (int k = 0; k < 6; ++k)
+    m.vertices.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
+  m.vertices.push_back({0, 0, 0});  // 6: the third corner of the standing triangle, moved below
+  m.vertices.push_back({0, 0, 0});  // 7
+  m.vertices.push_back({0, 0, 0});  // 8
+  m.vertices[6] = {0.2, 0, 1};
+  m.vertices.push_back({-0.2, 0, 1});  // 9
+  for (Index k = 0; k < 6; ++k)
+    m.triangles.push_back({k < 3 ? Index{7} : Index{8}, k, (k + 1) % 6});
+  m.triangles.push_back({7, 6, 9});
+  // The pinch, and the two rim vertices where the slits open (two fans each).
+  ASSERT_EQ(analyze_topology(m).nonmanifold_vertices, 3u);
+  const RepairReport r = repair_mesh(m);
+  EXPECT_EQ(r.duplicate_vertices_merged, 1u);
+  EXPECT_EQ(r.duplicate_vertices_kept_apart, 0u);
+  const TopologyReport t = analyze_topology(m);
+  EXPECT_EQ(t.nonmanifold_vertices, 1u);  // the pinch, as it was; the slits are closed
+  EXPECT_EQ(t.nonmanifold_edges, 0u);
+  EXPECT_EQ(t.boundary_loops, 2u);  // the hexagon's rim and the standing triangle: no slit
+  EXPECT_EQ(m.vertices.size(), 9u);
+}
+
 TEST(Repair, StitchesASeamButNotAWeldAlongAnEdge) {
   // A cube cut open along one edge (its vertices duplicated on one side) stitches back; a second
   // cube glued face to face along an edge (sharing two duplicated vertices) would put four

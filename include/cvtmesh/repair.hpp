@@ -37,13 +37,14 @@ struct RepairReport {
 inline constexpr Index kRemovedVertex = ~Index{0};
 
 // Applies, in this order: merge duplicate vertices (equal or nearly equal coordinates) where that
-// stitches the surface and makes no edge or vertex non-manifold (the others are kept apart and
-// counted), drop zero-area triangles (exact collinearity test), drop duplicate triangles (first one
-// kept), drop unreferenced vertices, flip the triangles listed the other way round from most of
-// their patch (the triangles joined by manifold edges; a patch no orientation makes consistent
-// stays as it is). Deterministic; the kept elements keep their relative order. `new_id`, when
-// given, receives each vertex's id in the repaired mesh: a merged duplicate's is that of the vertex
-// it was merged into; a removed vertex's is kRemovedVertex.
+// stitches the surface and makes no edge or vertex non-manifold, nor a pinch vertex more so than
+// its copies were (the others are kept apart and counted), drop zero-area triangles (exact
+// collinearity test), drop duplicate triangles (first one kept), drop unreferenced vertices, flip
+// the triangles listed the other way round from most of their patch (the triangles joined by
+// manifold edges; a patch no orientation makes consistent stays as it is). Deterministic; the kept
+// elements keep their relative order. `new_id`, when given, receives each vertex's id in the
+// repaired mesh: a merged duplicate's is that of the vertex it was merged into; a removed vertex's
+// is kRemovedVertex.
 RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id = nullptr);
 
 // Edges given in a mesh's vertex ids (feature edges read from a file), in the ids of the mesh

@@ -1,6 +1,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <map>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -10,6 +11,7 @@
 #include "geometry/manifold_defects.hpp"
 #include "geometry/near_points.hpp"
 #include "geometry/orient_triangles.hpp"
+#include "geometry/union_find.hpp"
 
 namespace cvtmesh {
 
@@ -43,6 +45,59 @@ void compose(std::vector<Index>& first, const std::vector<Index>& second) {
     if (v != kRemovedVertex) v = second[v];
 }
 
+// A vertex's star: how many fans its triangles make (joined across its edges of exactly two of
+// them), and how many of its edges have three or more.
+struct Star {
+  std::size_t fans = 0, branching_edges = 0;
+};
+
+Star star_of(Index v, const std::vector<Triangle>& around) {
+  std::map<Index, std::vector<std::size_t>> at_edge;  // per other end, the triangles
+  for (std::size_t i = 0; i < around.size(); ++i)
+    for (const Index w : around[i])
+      if (w != v) at_edge[w].push_back(i);
+  UnionFind fans(around.size());
+  Star star;
+  for (const auto& [w, triangles] : at_edge) {
+    if (triangles.size() == 2) fans.unite(triangles[0], triangles[1]);
+    star.branching_edges += triangles.size() > 2;
+  }
+  for (std::size_t i = 0; i < around.size(); ++i) star.fans += fans.find(i) == i;
+  return star;
+}
+
+// Per group representative flagged (its merged vertex is non-manifold in `merged`), whether the
+// merge made it so: more fans than the most any vertex of the group had in `original`, or more
+// edges of three or more triangles than they had together. A group whose vertex was a pinch
+// already, merged with copies that only close slits in its fans, stays merged (teapot.obj of a
+// public test set: three vertices at one point, one of them a pinch of two fans; kept apart, its
+// remesh welded the wrong ones).
+std::vector<bool> made_worse(const std::vector<Triangle>& original,
+                             const std::vector<Triangle>& merged,
+                             const std::vector<Index>& representative,
+                             const std::vector<bool>& flagged) {
+  std::map<Index, std::vector<Triangle>> before, after;  // per vertex of a flagged group
+  for (const Triangle& t : original)
+    for (const Index v : t)
+      if (flagged[representative[v]]) before[v].push_back(t);
+  for (const Triangle& t : merged)
+    for (const Index v : t)
+      if (flagged[v]) after[v].push_back(t);
+  std::map<Index, Star> most;  // per representative: its group's most fans, and edges summed
+  for (const auto& [v, around] : before) {
+    const Star star = star_of(v, around);
+    Star& m = most[representative[v]];
+    m.fans = std::max(m.fans, star.fans);
+    m.branching_edges += star.branching_edges;
+  }
+  std::vector<bool> worse(flagged.size(), false);
+  for (const auto& [v, around] : after) {
+    const Star star = star_of(v, around), m = most[v];
+    worse[v] = star.fans > m.fans || star.branching_edges > m.branching_edges;
+  }
+  return worse;
+}
+
 // Merges vertices with equal coordinates, or within near_point_tolerance of one another, where
 // that stitches the mesh, as CGAL's stitch_borders does: a group whose merge would leave a
 // non-manifold edge or vertex there stays apart (two parts that touch at a point or along an edge
@@ -71,11 +126,16 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& nearly_equ
     // A triangle with two nearly equal corners collapses; the repair drops it.
     std::erase_if(merged,
                   [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; });
-    // Boundary edges and folds are allowed: only a non-manifold edge or vertex splits a group.
+    // Boundary edges and folds are allowed: only a non-manifold edge or vertex splits a group,
+    // and only one that the merge made worse than the group's own vertices were.
     const std::vector<bool> bad = find_manifold_defects(p.size(), merged, {}, false).vertex;
+    std::vector<bool> flagged(p.size(), false);
+    for (std::size_t v = 0; v < p.size(); ++v)
+      flagged[v] = bad[v] && merging[v] && representative[v] == v;
+    const std::vector<bool> worse = made_worse(mesh.triangles, merged, representative, flagged);
     bool split = false;
     for (std::size_t v = 0; v < p.size(); ++v)
-      if (bad[v] && merging[v] && representative[v] == v) {
+      if (worse[v]) {
         merging[v] = false;
         kept_apart += group_size[v] - 1;
         split = true;
