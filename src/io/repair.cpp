@@ -130,8 +130,10 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& nearly_equ
     // and only one that the merge made worse than the group's own vertices were.
     const std::vector<bool> bad = find_manifold_defects(p.size(), merged, {}, false).vertex;
     std::vector<bool> flagged(p.size(), false);
+    bool any_flagged = false;
     for (std::size_t v = 0; v < p.size(); ++v)
-      flagged[v] = bad[v] && merging[v] && representative[v] == v;
+      any_flagged |= flagged[v] = bad[v] && merging[v] && representative[v] == v;
+    if (!any_flagged) break;  // the usual case: no merge made a defect
     const std::vector<bool> worse = made_worse(mesh.triangles, merged, representative, flagged);
     bool split = false;
     for (std::size_t v = 0; v < p.size(); ++v)

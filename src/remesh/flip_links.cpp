@@ -127,9 +127,9 @@ std::optional<std::vector<Triangle>> zipped_wedge(const TriangleMesh& m, const V
                                                   const std::vector<Index>& B,
                                                   const std::vector<Index>& bridge) {
   // The new edges inside the loop must be new to the mesh: the last rung and the fan's.
-  if (bridge.size() > 2 && !triangles_on(m, at, A.back(), B.back()).empty()) return std::nullopt;
+  if (bridge.size() > 2 && has_edge(m, at, A.back(), B.back())) return std::nullopt;
   for (std::size_t k = 2; k + 1 < bridge.size(); ++k)
-    if (!triangles_on(m, at, A.back(), bridge[k]).empty()) return std::nullopt;
+    if (has_edge(m, at, A.back(), bridge[k])) return std::nullopt;
   const std::vector<Index> across = triangles_on(m, at, bridge[0], bridge[1]);
   if (across.size() != 1) return std::nullopt;
   std::vector<Triangle> wedge{{A[0], A[1], B[1]}};
