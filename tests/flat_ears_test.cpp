@@ -1,5 +1,5 @@
-// Flat ears at the boundary: removed, with the boundary loop, the manifold and the Euler
-// characteristic kept; corners, ears that are not flat and lone triangles stay.
+// Flat and folded ears at the boundary: removed, with the boundary loop, the manifold and the
+// Euler characteristic kept; corners, ears that are neither and lone triangles stay.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +81,21 @@ TEST(FlatEars, CornersEarsThatAreNotFlatAndLoneTrianglesStay) {
   TriangleMesh sliver{{{0, 0, 0}, {1, 0, 0}, {0.5, 0.01, 0}}, {{0, 1, 2}}};
   EXPECT_EQ(remove_flat_ears(sliver, std::vector<bool>(3, false)), 0u);
   EXPECT_EQ(sliver.triangles.size(), 1u);
+}
+
+// An ear whose vertex lies inside the disk, across the chord: a triangle folded back over its
+// neighbour (136° at its vertex, so not flat). It goes, unless its vertex is a corner.
+TEST(FlatEars, AnEarFoldedBackOverItsNeighbourGoes) {
+  TriangleMesh mesh = disk_with_ear(-0.2);
+  std::vector<bool> kept(mesh.vertices.size(), false);
+  kept.back() = true;
+  EXPECT_EQ(remove_flat_ears(mesh, kept), 0u);
+  EXPECT_EQ(remove_flat_ears(mesh, std::vector<bool>(mesh.vertices.size(), false)), 1u);
+  repair_mesh(mesh);
+  const TopologyReport after = analyze_topology(mesh);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_TRUE(same_topology(after, analyze_topology(testing::disk(4, 12))));
+  EXPECT_EQ(mesh.triangles.size(), testing::disk(4, 12).triangles.size());
 }
 
 // An ear whose vertex also has another fan (a pinch) is not removed: that would change the

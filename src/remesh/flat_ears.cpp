@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "features/edge_uses.hpp"
 #include "geometry/triangle_sides.hpp"
@@ -13,23 +14,39 @@ namespace {
 // cos 160°: an angle at least this wide has a cosine at most this.
 const double kFlatEarCos = std::cos(160 * M_PI / 180);
 
+// cos 120°: an ear whose normal turns more than this from its neighbour's across the chord lies
+// folded back over it. A cell in two pieces along a boundary curve makes one: the far piece's
+// vertex (alligator.obj of a public test set, cut flat along a staircase of corners, at 1k:
+// 9 ears folded flat, θmin 8.5°).
+const double kFoldedCos = std::cos(120 * M_PI / 180);
+
 // A vertex this close to a neighbour, relative to the ear's third edge, lies on top of it.
 constexpr double kOnTop = 1e-12;
 
-// How many triangles use each edge, counted down as ears go: the mesh's edges sorted (from its
-// sorted sides), with a count each.
+// How many triangles use each edge, counted down as ears go, and which: the mesh's sides sorted
+// (sorted_sides), each edge's run of them found by binary search.
 class EdgeCounts {
  public:
-  explicit EdgeCounts(const TriangleMesh& mesh) {
-    for (const TriangleSide& side : sorted_sides(mesh)) {
-      const Edge e{side.lo, side.hi};
-      if (edges_.empty() || edges_.back() != e) edges_.push_back(e), uses_.push_back(0);
+  explicit EdgeCounts(const TriangleMesh& mesh) : sides_(sorted_sides(mesh)) {
+    for (std::size_t i = 0; i < sides_.size(); ++i) {
+      const Edge e{sides_[i].lo, sides_[i].hi};
+      if (edges_.empty() || edges_.back() != e)
+        edges_.push_back(e), uses_.push_back(0), first_.push_back(i);
       ++uses_.back();
     }
+    first_.push_back(sides_.size());
   }
   int at(const Edge& e) const { return uses_[slot(e)]; }
   void remove(const Triangle& t) {
     for (int k = 0; k < 3; ++k) --uses_[slot(edge_of(t[k], t[(k + 1) % 3]))];
+  }
+  // A triangle on edge `e` other than `t` and not `removed`, if there is one.
+  std::optional<std::size_t> other(const Edge& e, std::size_t t,
+                                   const std::vector<bool>& removed) const {
+    const std::size_t s = slot(e);
+    for (std::size_t i = first_[s]; i < first_[s + 1]; ++i)
+      if (sides_[i].triangle != t && !removed[sides_[i].triangle]) return sides_[i].triangle;
+    return std::nullopt;
   }
 
  private:
@@ -37,8 +54,10 @@ class EdgeCounts {
     return static_cast<std::size_t>(std::lower_bound(edges_.begin(), edges_.end(), e) -
                                     edges_.begin());
   }
+  std::vector<TriangleSide> sides_;
   std::vector<Edge> edges_;
   std::vector<int> uses_;
+  std::vector<std::size_t> first_;  // per edge, its first side; then the number of sides
 };
 
 // Whether vertex a of triangle t lies on top of its vertex n: nearer than kOnTop times the
@@ -49,11 +68,24 @@ bool on_top(const TriangleMesh& mesh, Index a, Index n, const Triangle& t) {
          kOnTop * distance(mesh.vertices[b], mesh.vertices[c]);
 }
 
-// The corner of `t` that is a flat ear's vertex, or -1. `triangles_at`: per vertex, the
-// triangles that use it (an ear's vertex has no other: where it has, it is a pinch of two
-// fans, which an ear's removal would change).
-int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeCounts& uses,
-                    const std::vector<int>& triangles_at, const std::vector<bool>& kept) {
+// Whether triangle (a, b, c) folds back onto triangle `across` (on its edge b-c): their normals
+// more than 120° apart.
+bool folded_onto(const TriangleMesh& mesh, Index a, Index b, Index c, const Triangle& across) {
+  const auto normal = [&](Index u, Index v, Index w) {
+    const Vec3& p = mesh.vertices[u];
+    return cross(mesh.vertices[v] - p, mesh.vertices[w] - p);
+  };
+  const Vec3 n = normal(a, b, c), m = normal(across[0], across[1], across[2]);
+  return dot(n, m) < kFoldedCos * norm(n) * norm(m);
+}
+
+// The corner of triangle `i` that is a flat or folded ear's vertex, or -1. `triangles_at`: per
+// vertex, the triangles that use it (an ear's vertex has no other: where it has, it is a pinch
+// of two fans, which an ear's removal would change).
+int flat_ear_corner(const TriangleMesh& mesh, std::size_t i, const EdgeCounts& uses,
+                    const std::vector<int>& triangles_at, const std::vector<bool>& kept,
+                    const std::vector<bool>& removed) {
+  const Triangle& t = mesh.triangles[i];
   for (int k = 0; k < 3; ++k) {
     const Index a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
     if (triangles_at[a] != 1) continue;
@@ -69,6 +101,8 @@ int flat_ear_corner(const TriangleMesh& mesh, const Triangle& t, const EdgeCount
     const Vec3 u = mesh.vertices[b] - mesh.vertices[a], v = mesh.vertices[c] - mesh.vertices[a];
     const double lengths = norm(u) * norm(v);
     if (lengths > 0 && dot(u, v) <= kFlatEarCos * lengths) return k;
+    const std::optional<std::size_t> across = uses.other(edge_of(b, c), i, removed);
+    if (across && folded_onto(mesh, a, b, c, mesh.triangles[*across])) return k;
   }
   return -1;
 }
@@ -86,8 +120,7 @@ std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept) 
   for (bool found = true; found;) {
     found = false;
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-      if (removed[i] || flat_ear_corner(mesh, mesh.triangles[i], uses, triangles_at, kept) < 0)
-        continue;
+      if (removed[i] || flat_ear_corner(mesh, i, uses, triangles_at, kept, removed) < 0) continue;
       uses.remove(mesh.triangles[i]);
       for (const Index v : mesh.triangles[i]) --triangles_at[v];
       removed[i] = true;

@@ -5,7 +5,9 @@
 // degree or two (pig.off, ChineseDragon-10kv.off, mech-holes-shark.off at 5k). Removing it takes
 // the ear's vertex off the boundary, which then runs along the chord of the other two: the same
 // boundary loop, a manifold as before, the same Euler characteristic (one vertex, two edges and
-// one triangle fewer).
+// one triangle fewer). An ear folded back over the triangle across its chord goes as well: a cell
+// in two pieces along a boundary curve gives its far piece a vertex there, which can lie on the
+// wrong side of the chord.
 #pragma once
 
 #include <cstddef>
@@ -15,13 +17,15 @@
 
 namespace cvtmesh {
 
-// Removes, until none is left, every ear whose angle at its vertex is at least 160°, unless that
-// vertex is `kept` (corners); and every ear whose vertex lies on top of one of its neighbours
-// (nearer than 1e-12 times its third edge: no area), even where that vertex is kept. Such an
-// ear's smallest angle is under 10°, and its vertex lies within 0.09 chord lengths of the chord:
-// the height |ab||ac| sin θ / |bc| is at most sin 20° (|ab| + |ac|)² / (4 |bc|), and |bc| ≥ cos 10°
-// (|ab| + |ac|). The removed vertices are left unreferenced. Returns how many ears were removed.
-// Sequential, in triangle order.
+// Removes, until none is left, every ear whose angle at its vertex is at least 160°, and every
+// ear whose normal turns more than 120° from its neighbour's across its third edge (folded back
+// over it), unless that vertex is `kept` (corners); and every ear whose vertex lies on top of
+// one of its neighbours (nearer than 1e-12 times its third edge: no area), even where that
+// vertex is kept. A flat ear's smallest angle is under 10°, and its vertex lies within 0.09
+// chord lengths of the chord: the height |ab||ac| sin θ / |bc| is at most
+// sin 20° (|ab| + |ac|)² / (4 |bc|), and |bc| ≥ cos 10° (|ab| + |ac|). A folded ear covers
+// nothing its neighbour does not. The removed vertices are left unreferenced. Returns how many
+// ears were removed. Sequential, in triangle order.
 std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept);
 
 }  // namespace cvtmesh

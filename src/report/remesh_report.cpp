@@ -115,8 +115,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
       r.polish_rounds, r.shape_flips, r.short_edges_collapsed, r.shape_moves, r.vertices_fitted);
   if (r.flat_ears_removed > 0)
     text += fmt::format(
-        "  boundary  {} flat ears removed (a boundary vertex whose one triangle "
-        "was flat)\n",
+        "  boundary  {} flat or folded ears removed (a boundary vertex whose one triangle "
+        "was flat, or folded back over its neighbour)\n",
         r.flat_ears_removed);
   if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
     text += fmt::format(
