@@ -10,13 +10,22 @@
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
 //     rounds (remesh/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
-//   BM_ProjectMoved/M: 20k points on a torus of 40k triangles, each moved at random by up to M%
-//     of the points' spacing, projected again from their feet before (as CCVT projects its seeds
-//     every evaluation, cvt/cvt_objective) against without a hint; counters hinted_s, fresh_s,
-//     hinted_over_fresh, and differing (feet the two find at different distances: must be 0).
+//   BM_ProjectMoved/M/C: 20k points on a torus of 40k triangles (C = 0) or 384 (C = 1, each
+//     triangle some 50 points wide), each moved at random by up to M% of the points' spacing,
+//     projected again from their feet before (as CCVT projects its seeds every evaluation,
+//     cvt/cvt_objective) against without a hint, and against CGAL's own search from the same
+//     hint; counters hinted_s, fresh_s, cgal_s, hinted_over_fresh, hinted_over_cgal, differing
+//     (feet the hinted and fresh searches find at different distances: must be 0) and off_cgal
+//     (distances more than 1e-12 spacings from CGAL's: must be 0).
 #include <benchmark/benchmark.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
 #include <chrono>
+#include <cmath>
 #include <random>
 
 #include "cvtmesh/hausdorff.hpp"
@@ -96,9 +105,40 @@ void BM_FitSurface(benchmark::State& state) {
 }
 BENCHMARK(BM_FitSurface)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
 
+// CGAL's own search for the nearest point, with the same hint: the baseline of BM_ProjectMoved.
+class CgalNearest {
+ public:
+  explicit CgalNearest(const TriangleMesh& mesh) {
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto [a, b, c] = mesh.corners(t);
+      triangles_.emplace_back(point(a), point(b), point(c));
+    }
+    tree_.insert(triangles_.begin(), triangles_.end());
+    tree_.build();
+    tree_.do_not_accelerate_distance_queries();
+  }
+  // `hint` on triangle `t` of the mesh.
+  double distance(const Vec3& p, const Vec3& hint, std::size_t t) const {
+    const auto found = tree_.closest_point_and_primitive(
+        point(p), {point(hint), triangles_.begin() + static_cast<std::ptrdiff_t>(t)});
+    return std::sqrt(CGAL::squared_distance(point(p), found.first));
+  }
+
+ private:
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Triangles = std::vector<Kernel::Triangle_3>;
+  using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
+  static Kernel::Point_3 point(const Vec3& v) { return {v.x, v.y, v.z}; }
+  Triangles triangles_;
+  CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>> tree_;
+};
+
 void BM_ProjectMoved(benchmark::State& state) {
-  const TriangleMesh torus = testing::torus(1.0, 0.3, 200, 100);
+  const bool coarse = state.range(1) != 0;
+  const TriangleMesh torus = coarse ? testing::torus(1.0, 0.3, 24, 8)  // 384 triangles
+                                    : testing::torus(1.0, 0.3, 200, 100);
   const SurfaceProjector surface(torus);
+  const CgalNearest cgal(torus);
   const std::size_t n = 20'000;
   const std::vector<Vec3> points = sample_surface(torus, n, 1);
   std::vector<SurfaceProjector::Foot> feet;
@@ -117,16 +157,31 @@ void BM_ProjectMoved(benchmark::State& state) {
     start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < n; ++k) fresh[k] = surface.nearest(moved[k]);
     const double fresh_s = seconds_since(start);
-    state.SetIterationTime(hinted_s);
-    std::size_t differing = 0;
+    start = std::chrono::steady_clock::now();
+    std::vector<double> by_cgal(n);
     for (std::size_t k = 0; k < n; ++k)
-      differing += distance(moved[k], hinted[k].point) != distance(moved[k], fresh[k].point);
+      by_cgal[k] =
+          cgal.distance(moved[k], feet[k].point, surface.surface_triangle(feet[k].triangle));
+    const double cgal_s = seconds_since(start);
+    state.SetIterationTime(hinted_s);
+    std::size_t differing = 0, off_cgal = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d = distance(moved[k], hinted[k].point);
+      differing += d != distance(moved[k], fresh[k].point);
+      off_cgal += std::abs(d - by_cgal[k]) > 1e-12 * spacing;
+    }
     state.counters["hinted_s"] = hinted_s;
     state.counters["fresh_s"] = fresh_s;
+    state.counters["cgal_s"] = cgal_s;
     state.counters["hinted_over_fresh"] = hinted_s / fresh_s;
+    state.counters["hinted_over_cgal"] = hinted_s / cgal_s;
     state.counters["differing"] = static_cast<double>(differing);
+    state.counters["off_cgal"] = static_cast<double>(off_cgal);
   }
 }
-BENCHMARK(BM_ProjectMoved)->Arg(10)->Arg(50)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ProjectMoved)
+    ->ArgsProduct({{10, 50}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
