@@ -36,11 +36,16 @@ TriangleMesh disk_with_ear(double lift) {
   return mesh;
 }
 
+// No vertex seedless: every one a seed.
+std::vector<bool> none(const TriangleMesh& mesh) {
+  return std::vector<bool>(mesh.vertices.size(), false);
+}
+
 TEST(FlatEars, AFlatEarGoesAndTheBoundaryLoopStays) {
   TriangleMesh mesh = disk_with_ear(0.02);  // 175.4° at the ear's vertex
   const TopologyReport before = analyze_topology(testing::disk(4, 12));
   EXPECT_LT(measure_quality(mesh).angle_min_deg, 3);
-  EXPECT_EQ(remove_flat_ears(mesh, std::vector<bool>(mesh.vertices.size(), false)), 1u);
+  EXPECT_EQ(remove_flat_ears(mesh, none(mesh), none(mesh)), 1u);
   repair_mesh(mesh);
   const TopologyReport after = analyze_topology(mesh);
   EXPECT_TRUE(after.is_manifold());
@@ -60,7 +65,7 @@ TEST(FlatEars, AnEarOnTopOfItsNeighbourGoesEvenAtACorner) {
   std::vector<bool> kept(mesh.vertices.size(), false);
   kept.back() = true;
   EXPECT_EQ(measure_quality(mesh).angle_min_deg, 0);
-  EXPECT_EQ(remove_flat_ears(mesh, kept), 1u);
+  EXPECT_EQ(remove_flat_ears(mesh, kept, none(mesh)), 1u);
   EXPECT_EQ(mesh.vertices[ear[0]], neighbour);
   repair_mesh(mesh);
   EXPECT_TRUE(same_topology(analyze_topology(mesh), analyze_topology(testing::disk(4, 12))));
@@ -71,16 +76,35 @@ TEST(FlatEars, CornersEarsThatAreNotFlatAndLoneTrianglesStay) {
   TriangleMesh at_corner = disk_with_ear(0.02);
   std::vector<bool> kept(at_corner.vertices.size(), false);
   kept.back() = true;
-  EXPECT_EQ(remove_flat_ears(at_corner, kept), 0u);
+  EXPECT_EQ(remove_flat_ears(at_corner, kept, none(at_corner)), 0u);
   EXPECT_EQ(at_corner.triangles.size(), disk_with_ear(0.02).triangles.size());
 
   TriangleMesh pointed = disk_with_ear(0.2);  // 136° at the ear's vertex
-  EXPECT_EQ(remove_flat_ears(pointed, std::vector<bool>(pointed.vertices.size(), false)), 0u);
+  EXPECT_EQ(remove_flat_ears(pointed, none(pointed), none(pointed)), 0u);
 
   // Every corner of a lone sliver has two boundary edges: it is a component, not an ear.
   TriangleMesh sliver{{{0, 0, 0}, {1, 0, 0}, {0.5, 0.01, 0}}, {{0, 1, 2}}};
-  EXPECT_EQ(remove_flat_ears(sliver, std::vector<bool>(3, false)), 0u);
+  EXPECT_EQ(remove_flat_ears(sliver, none(sliver), none(sliver)), 0u);
   EXPECT_EQ(sliver.triangles.size(), 1u);
+}
+
+// An ear at 136° stays where its vertex is a seed, and goes where it is none (a cell's far
+// piece): from 120° on, unless it is a corner.
+TEST(FlatEars, ASeedlessEarGoesFrom120Degrees) {
+  TriangleMesh mesh = disk_with_ear(0.2);
+  std::vector<bool> seedless = none(mesh);
+  seedless.back() = true;
+  std::vector<bool> kept = none(mesh);
+  kept.back() = true;
+  EXPECT_EQ(remove_flat_ears(mesh, none(mesh), none(mesh)), 0u);
+  EXPECT_EQ(remove_flat_ears(mesh, kept, seedless), 0u);
+  EXPECT_EQ(remove_flat_ears(mesh, none(mesh), seedless), 1u);
+  repair_mesh(mesh);
+  EXPECT_TRUE(same_topology(analyze_topology(mesh), analyze_topology(testing::disk(4, 12))));
+  TriangleMesh pointed = disk_with_ear(0.4);  // 102° at the ear's vertex
+  std::vector<bool> pointed_seedless = none(pointed);
+  pointed_seedless.back() = true;
+  EXPECT_EQ(remove_flat_ears(pointed, none(pointed), pointed_seedless), 0u);
 }
 
 // An ear whose vertex lies inside the disk, across the chord: a triangle folded back over its
@@ -89,8 +113,8 @@ TEST(FlatEars, AnEarFoldedBackOverItsNeighbourGoes) {
   TriangleMesh mesh = disk_with_ear(-0.2);
   std::vector<bool> kept(mesh.vertices.size(), false);
   kept.back() = true;
-  EXPECT_EQ(remove_flat_ears(mesh, kept), 0u);
-  EXPECT_EQ(remove_flat_ears(mesh, std::vector<bool>(mesh.vertices.size(), false)), 1u);
+  EXPECT_EQ(remove_flat_ears(mesh, kept, none(mesh)), 0u);
+  EXPECT_EQ(remove_flat_ears(mesh, none(mesh), none(mesh)), 1u);
   repair_mesh(mesh);
   const TopologyReport after = analyze_topology(mesh);
   EXPECT_TRUE(after.is_manifold());
@@ -108,7 +132,7 @@ TEST(FlatEars, APinchedVertexKeepsItsEar) {
   mesh.vertices.push_back(p + Vec3{0.1, 0, 1});
   const auto n = static_cast<Index>(mesh.vertices.size());
   mesh.triangles.push_back({ear, n - 2, n - 1});
-  EXPECT_EQ(remove_flat_ears(mesh, std::vector<bool>(mesh.vertices.size(), false)), 0u);
+  EXPECT_EQ(remove_flat_ears(mesh, none(mesh), none(mesh)), 0u);
 }
 
 }  // namespace

@@ -107,9 +107,11 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   result.triangles_closing_holes = last.closed.triangles;
   result.vertices_closing_holes = last.closed.vertices;
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
-  std::vector<bool> corners(result.mesh.vertices.size(), false);
+  std::vector<bool> corners(result.mesh.vertices.size(), false), seedless(corners.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;
-  result.flat_ears_removed = remove_flat_ears(result.mesh, corners);
+  // Past the seeds: the cells' far pieces, and the centres of holes the last step closed.
+  for (std::size_t v = seeds.size(); v < seedless.size(); ++v) seedless[v] = true;
+  result.flat_ears_removed = remove_flat_ears(result.mesh, corners, seedless);
   repair_mesh(result.mesh);  // drops seeds whose cells are empty
   const std::map<Vec3, Index> output_id = vertex_ids(result.mesh);
   result.vertices_added =

@@ -17,15 +17,17 @@
 
 namespace cvtmesh {
 
-// Removes, until none is left, every ear whose angle at its vertex is at least 160°, and every
-// ear whose normal turns more than 120° from its neighbour's across its third edge (folded back
-// over it), unless that vertex is `kept` (corners); and every ear whose vertex lies on top of
-// one of its neighbours (nearer than 1e-12 times its third edge: no area), even where that
-// vertex is kept. A flat ear's smallest angle is under 10°, and its vertex lies within 0.09
-// chord lengths of the chord: the height |ab||ac| sin θ / |bc| is at most
-// sin 20° (|ab| + |ac|)² / (4 |bc|), and |bc| ≥ cos 10° (|ab| + |ac|). A folded ear covers
-// nothing its neighbour does not. The removed vertices are left unreferenced. Returns how many
-// ears were removed. Sequential, in triangle order.
-std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept);
+// Removes, until none is left, every ear whose angle at its vertex is at least 160° (120° where
+// that vertex is `seedless`: a cell's far piece, no seed), and every ear whose normal turns more
+// than 120° from its neighbour's across its third edge (folded back over it), unless that vertex
+// is `kept` (corners); and every ear whose vertex lies on top of one of its neighbours (nearer
+// than 1e-12 times its third edge: no area), even where that vertex is kept. A flat ear's
+// smallest angle is under 10°, and its vertex lies within 0.09 chord lengths of the chord: the
+// height |ab||ac| sin θ / |bc| is at most sin 20° (|ab| + |ac|)² / (4 |bc|), and
+// |bc| ≥ cos 10° (|ab| + |ac|); a seedless one's is under 30°, its vertex within 0.29 chord
+// lengths. A folded ear covers nothing its neighbour does not. The removed vertices are left
+// unreferenced. Returns how many ears were removed. Sequential, in triangle order.
+std::size_t remove_flat_ears(TriangleMesh& mesh, const std::vector<bool>& kept,
+                             const std::vector<bool>& seedless);
 
 }  // namespace cvtmesh
