@@ -306,6 +306,53 @@ TEST(FlipInLinks, NoFlipThatFoldsMakesSliversOrIsOnANonManifoldEdge) {
   EXPECT_EQ(flip_in_links(strip, {{0, 5}}, 15), std::vector<bool>{false});
 }
 
+// A flat 4 × 4 grid of unit squares, each split by its diagonal from (i, j) to (i + 1, j + 1):
+// vertex (i, j) is 5 i + j, and the inner ones have six triangles.
+TriangleMesh grid() {
+  TriangleMesh m;
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) m.vertices.push_back({double(i), double(j), 0});
+  for (Index i = 0; i < 4; ++i)
+    for (Index j = 0; j < 4; ++j) {
+      const Index a = 5 * i + j, b = a + 5, c = b + 1, d = a + 1;
+      m.triangles.push_back({a, b, c});
+      m.triangles.push_back({a, c, d});
+    }
+  return m;
+}
+
+TEST(FlipOut, AnInnerEdgeGivesWayToTheOtherDiagonal) {
+  TriangleMesh m = grid();
+  EXPECT_TRUE(flip_out(m, {6, 12}));  // the diagonal of the square at (1, 1)
+  EXPECT_FALSE(has_edge(m, 6, 12));
+  EXPECT_TRUE(has_edge(m, 7, 11));
+  EXPECT_EQ(m.triangles.size(), grid().triangles.size());
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {  // still facing +z, as before
+    const auto [a, b, c] = m.corners(t);
+    EXPECT_GT(cross(b - a, c - a).z, 0);
+  }
+  EXPECT_FALSE(flip_out(m, {6, 12}));  // gone already
+}
+
+TEST(FlipOut, NoFlipAtAVertexOfThreeTrianglesOrFewerOnAFoldOrOntoAnEdge) {
+  TriangleMesh square = split_square();  // its diagonal's ends have two triangles each
+  EXPECT_FALSE(flip_out(square, {1, 3}));
+  // Edge (6, 7) of the grid lies between (1, 6, 7) and (6, 12, 7): its other diagonal is
+  // (1, 12). With vertex 6 moved above that diagonal, the quad is not convex there, and
+  // (1, 6, 12) would face -z.
+  TriangleMesh dart = grid();
+  dart.vertices[6] = {1, 1.6, 0};
+  EXPECT_FALSE(flip_out(dart, {6, 7}));
+  EXPECT_EQ(dart.triangles, grid().triangles);
+  TriangleMesh flat = grid();
+  EXPECT_TRUE(flip_out(flat, {6, 7}));  // where it is convex
+  // The other diagonal an edge already (a triangle on it, off the grid): no flip.
+  TriangleMesh joined = grid();
+  joined.vertices.push_back({1, 1.5, 1});
+  joined.triangles.push_back({1, 12, 25});
+  EXPECT_FALSE(flip_out(joined, {6, 7}));
+}
+
 // A boundary tip: triangle (0, 1, 2) and corner 3 past its edge (0, 1), used by no triangle.
 TriangleMesh tip_with_corner_at(const Vec3& corner) {
   TriangleMesh m;

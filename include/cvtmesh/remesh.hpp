@@ -147,8 +147,9 @@ struct RemeshResult {
   std::size_t holes_closed = 0, triangles_closing_holes = 0;
   std::size_t vertices_closing_holes = 0;  // centres of holes closed by a fan
   // Flat or folded ears removed at the boundary (remesh/flat_ears): triangles whose two edges at
-  // one vertex, not a corner, were boundary edges meeting at 160° or more, or that folded back
-  // more than 120° over their neighbour across the third edge. The boundary loop stays;
+  // one vertex, not a corner, were boundary edges meeting at 160° or more (120° at a vertex that
+  // is no seed: a cell's far piece), or that folded back more than 120° over their neighbour
+  // across the third edge. The boundary loop stays;
   // the vertex goes, and the links from it to its two neighbours count as missing.
   std::size_t flat_ears_removed = 0;
   // Surface vertices of three triangles removed for the triangle of their three neighbours,

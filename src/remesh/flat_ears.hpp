@@ -7,7 +7,7 @@
 // boundary loop, a manifold as before, the same Euler characteristic (one vertex, two edges and
 // one triangle fewer). An ear folded back over the triangle across its chord goes as well: a cell
 // in two pieces along a boundary curve gives its far piece a vertex there, which can lie on the
-// wrong side of the chord.
+// wrong side of the chord; and so does an ear at such a vertex, which is no seed, from 120°.
 #pragma once
 
 #include <cstddef>

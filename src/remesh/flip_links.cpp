@@ -171,6 +171,29 @@ std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& lin
   return flipped;
 }
 
+bool flip_out(TriangleMesh& mesh, const Edge& e) {
+  const VertexTriangles at(mesh);
+  const auto [a, b] = e;
+  std::vector<Index> on_edge;
+  for (const Index t : at(a))
+    if (position(mesh.triangles[t], b) != 3) on_edge.push_back(t);
+  if (on_edge.size() != 2 || at(a).size() < 4 || at(b).size() < 4) return false;
+  // t1 walks a → b, t2 b → a: their third corners c and d.
+  Index t1 = on_edge[0], t2 = on_edge[1];
+  if (mesh.triangles[t1][(position(mesh.triangles[t1], a) + 1) % 3] != b) std::swap(t1, t2);
+  const Triangle first = mesh.triangles[t1], second = mesh.triangles[t2];
+  if (first[(position(first, a) + 1) % 3] != b || second[(position(second, b) + 1) % 3] != a)
+    return false;
+  const Index c = first[(position(first, b) + 1) % 3], d = second[(position(second, a) + 1) % 3];
+  if (c == d || has_edge(mesh, at, c, d)) return false;
+  const Triangle new1{c, a, d}, new2{d, b, c};
+  const Vec3 facing = normal(mesh, first) + normal(mesh, second);
+  if (!(dot(normal(mesh, new1), facing) > 0 && dot(normal(mesh, new2), facing) > 0)) return false;
+  mesh.triangles[t1] = new1;
+  mesh.triangles[t2] = new2;
+  return true;
+}
+
 std::size_t close_corner_wedges(TriangleMesh& mesh, const std::vector<Index>& corners,
                                 const std::vector<Edge>& links) {
   VertexTriangles at(mesh);

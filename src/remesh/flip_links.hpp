@@ -19,6 +19,12 @@ namespace cvtmesh {
 std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& links,
                                 double min_angle_deg);
 
+// Flips edge e = (a, b) out of `mesh`: where exactly two triangles (a, b, c) and (b, a, d) share
+// it, c-d is no edge yet, and a and b each have four triangles or more, they become (c, a, d) and
+// (d, b, c), if both new triangles face the way the two old ones do (no fold). Returns whether it
+// flipped.
+bool flip_out(TriangleMesh& mesh, const Edge& e);
+
 // At a sharp tip of a boundary, the Voronoi vertex of the corner seed and the seeds next to it
 // on the two curves can fall past the tip's edges, off the surface: the restricted Delaunay
 // triangulation then has no triangle at the corner, and the output would lose it
