@@ -359,8 +359,9 @@ void part_pinch_copies(TriangleMesh& mesh, const std::vector<Edge>& feature_edge
 
 // Welds the output vertices found at the same pinch (one per component or sheet that kept it)
 // into the first, so that the output touches itself where the input did, and drops the others;
-// but not those of a pinch whose vertices share a neighbour (topology control failed to part
-// the sheets there), whose edges to it the weld would make non-manifold.
+// but not those of a pinch whose vertices still share a neighbour once part_pinch_copies has
+// flipped what it can (topology control failed to part the sheets there), whose edges to it the
+// weld would make non-manifold.
 void weld_pinches(RemeshResult& all, std::vector<std::pair<Index, Index>> found) {
   std::sort(found.begin(), found.end());
   part_pinch_copies(all.mesh, all.feature_edges, found);

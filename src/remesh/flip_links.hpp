@@ -3,7 +3,8 @@
 // Delaunay meshers recover a segment; where a corner at a boundary tip has no triangle, add the
 // triangles its links bound. In a wedge between two curves narrower than a triangle,
 // no placement of seeds makes every link Delaunay; a flip there costs no more angle than the
-// wedge already does.
+// wedge already does. And the flip the other way, an edge taken out (flip_out), which parts a
+// pinch's output copies before their weld (remesh/by_component).
 #pragma once
 
 #include <vector>
