@@ -44,6 +44,15 @@ bool has_edge(const TriangleMesh& m, const VertexTriangles& at, Index a, Index b
                      [&](Index t) { return position(m.triangles[t], b) != 3; });
 }
 
+// The triangles on edge (a, b).
+std::vector<Index> triangles_on(const TriangleMesh& m, const VertexTriangles& at, Index a,
+                                Index b) {
+  std::vector<Index> on;
+  for (const Index t : at(a))
+    if (position(m.triangles[t], b) != 3) on.push_back(t);
+  return on;
+}
+
 // Flips in edge (a, b) if one flip makes it with no angle under `min_angle`; whether it did.
 bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b, double min_angle) {
   for (const Index t1 : at(a)) {
@@ -51,9 +60,7 @@ bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b, double min_
     const int k = position(first, a);
     const Index c = first[(k + 1) % 3], d = first[(k + 2) % 3];
     // Edge (c, d) has just two triangles: this one and (d, c, b).
-    std::vector<Index> on_edge;
-    for (const Index t : at(c))
-      if (position(m.triangles[t], d) != 3) on_edge.push_back(t);
+    const std::vector<Index> on_edge = triangles_on(m, at, c, d);
     if (on_edge.size() != 2) continue;
     const Index t2 = on_edge[0] == t1 ? on_edge[1] : on_edge[0];
     const Triangle& second = m.triangles[t2];
@@ -78,15 +85,6 @@ bool flip_in(TriangleMesh& m, VertexTriangles& at, Index a, Index b, double min_
 // (close_corner_wedges): far past any wedge seen, short enough that a wrong turn costs little.
 constexpr std::size_t kMaxChain = 64;
 constexpr std::size_t kMaxBridge = 3;
-
-// The triangles on edge (a, b).
-std::vector<Index> triangles_on(const TriangleMesh& m, const VertexTriangles& at, Index a,
-                                Index b) {
-  std::vector<Index> on;
-  for (const Index t : at(a))
-    if (position(m.triangles[t], b) != 3) on.push_back(t);
-  return on;
-}
 
 // The vertices joined to u by an edge of one triangle (the boundary).
 std::vector<Index> boundary_neighbours(const TriangleMesh& m, const VertexTriangles& at, Index u) {
@@ -174,9 +172,7 @@ std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& lin
 bool flip_out(TriangleMesh& mesh, const Edge& e) {
   const VertexTriangles at(mesh);
   const auto [a, b] = e;
-  std::vector<Index> on_edge;
-  for (const Index t : at(a))
-    if (position(mesh.triangles[t], b) != 3) on_edge.push_back(t);
+  const std::vector<Index> on_edge = triangles_on(mesh, at, a, b);
   if (on_edge.size() != 2 || at(a).size() < 4 || at(b).size() < 4) return false;
   // t1 walks a → b, t2 b → a: their third corners c and d.
   Index t1 = on_edge[0], t2 = on_edge[1];
