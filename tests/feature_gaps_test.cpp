@@ -86,6 +86,39 @@ TEST(FeatureGaps, AWedgeUnder60DegreesNarrowsTowardsItsTip) {
   EXPECT_GT(checked, 70);
 }
 
+TEST(FeatureGaps, AWedgeWithItsTipNarrowsOnlyWhereWedgesAreAskedFor) {
+  // The sheet between two rays 20° apart from their common tip to radius 1, in rings: the tip a
+  // corner with a 20° sector. An even sizing leaves it alone (SizingSettings::gap_gradation).
+  const double wedge = 20 * std::numbers::pi / 180;
+  constexpr int kRings = 90, kAcross = 12;
+  TriangleMesh sheet;
+  sheet.vertices.push_back({0, 0, 0});
+  for (int i = 1; i <= kRings; ++i)
+    for (int j = 0; j <= kAcross; ++j) {
+      const double r = static_cast<double>(i) / kRings, a = wedge * j / kAcross;
+      sheet.vertices.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+  const auto at = [](int i, int j) { return static_cast<Index>(1 + (i - 1) * (kAcross + 1) + j); };
+  for (int j = 0; j < kAcross; ++j) sheet.triangles.push_back({0, at(1, j), at(1, j + 1)});
+  for (int i = 1; i < kRings; ++i)
+    for (int j = 0; j < kAcross; ++j)
+      add_quad(sheet, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  const Features features = outline(sheet);
+  ASSERT_EQ(narrow_feature_angles(sheet, features, 30).size(), 1u);
+  const std::vector<double> even(sheet.vertices.size(), 0.1);
+  const std::vector<double> narrowed = capped_by_feature_gaps(sheet, features, even);
+  const std::vector<double> left = capped_by_feature_gaps(sheet, features, even, false);
+  int checked = 0;
+  for (int i = 14; i <= 85; ++i) {  // the ray y = 0, away from the tip's own edges and the arc
+    const Index v = at(i, 0);
+    const double r = norm(sheet.vertices[v]);
+    EXPECT_NEAR(narrowed[v], std::min(0.1, r * std::sin(wedge)), 1e-9) << "at radius " << r;
+    EXPECT_EQ(left[v], 0.1) << "at radius " << r;
+    ++checked;
+  }
+  EXPECT_GT(checked, 70);
+}
+
 // Curves along polylines that join end to start (a corner where one ends and the next starts).
 std::pair<TriangleMesh, Features> chained(const std::vector<std::vector<Vec3>>& lines) {
   TriangleMesh mesh;

@@ -115,6 +115,11 @@ struct RemeshResult {
   // keep the input's topology, and one remeshed again with adaptive sizes (SizingSettings's
   // local feature size, the same count) did. False when the sizes were the caller's.
   bool sizes_adapted = false;
+  // Even sizes graded down towards feature gaps narrower than them (SizingSettings::
+  // gap_gradation: a hole smaller than an edge, a slot, a thin strip): the shortest target
+  // length there, as a fraction of the even length. 0 when the sizes stayed even (or were the
+  // caller's).
+  double gap_length_min = 0;
   // Vertices asked for on top of the count requested, where neither topology control nor
   // adaptive sizes kept the input's topology: the count doubled, at most twice (issue 18 item 2:
   // the count grows for the topology alone). 0 when the count asked for sufficed.

@@ -74,8 +74,8 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
                  const std::string& optimizer, const std::string& mode, std::uint64_t seed,
                  std::optional<double> feature_angle, bool no_features,
                  const py::object& feature_edges, std::optional<double> adaptive,
-                 const py::object& sizing, double min_edge_length, double max_edge_length,
-                 double time_limit, bool quiet, int threads,
+                 const py::object& sizing, double gap_gradation, double min_edge_length,
+                 double max_edge_length, double time_limit, bool quiet, int threads,
                  const std::function<void(const RemeshProgress&)>& progress) {
   TriangleMesh input = mesh_from_arrays(V, F);
   RemeshSettings s;
@@ -97,6 +97,8 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
   s.sizing.adaptive = adaptive.value_or(0);
   if (!sizing.is_none())
     s.sizing.edge_lengths = values_after_repair(lengths, new_id, input.vertices.size());
+  if (!(gap_gradation >= 0)) throw InvalidArgument("gap_gradation must not be negative");
+  s.sizing.gap_gradation = gap_gradation;
   s.sizing.min_edge_length = min_edge_length;
   s.sizing.max_edge_length = max_edge_length;
   const int sizes = given(vertices) + given(edge_length) + given(edge_length_rel) +
@@ -222,6 +224,10 @@ sizing : str, (n,) float array, or callable(point) -> float
     Target edge length per vertex of V (in V's units): an array, a function called on each
     row of V, or a file (one number a line, or a PLY with a vertex scalar). Scaled to the
     vertex count or edge length if one is given, used as it is otherwise.
+gap_gradation : float, default 5
+    Even sizes only (no adaptive, no sizing): edges grade down towards holes, slots and
+    strips narrower than half an edge length, a length doubling over at least about this many
+    edges (0: even everywhere, slivers at such gaps).
 min_edge_length, max_edge_length : float, default 0 (none)
     Clamps of the target lengths of adaptive or sizing.
 time_limit : float, seconds, default 0 (none)
@@ -264,21 +270,22 @@ void add_remesh(py::module_& m) {
                ", energy=" + std::to_string(p.energy) + ")";
       });
   const RemeshSettings defaults;  // the library's defaults are the module's
-  m.def(
-      "remesh", &remesh, kRemeshDoc, py::arg("V"), py::arg("F"), py::arg("vertices") = py::none(),
-      py::arg("edge_length") = py::none(), py::kw_only(), py::arg("edge_length_rel") = py::none(),
-      py::arg("seeds") = py::none(), py::arg("seeds_file") = py::none(),
-      py::arg("iterations") = defaults.iterations, py::arg("samples") = kRemeshReportSamples,
-      py::arg("no_hausdorff") = false, py::arg("polish_rounds") = defaults.polish_rounds,
-      py::arg("shape_sweeps") = defaults.shape_sweeps, py::arg("fit_rounds") = defaults.fit_rounds,
-      py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
-      py::arg("mode") = "both", py::arg("seed") = defaults.seed,
-      py::arg("feature_angle") = py::none(), py::arg("no_features") = false,
-      py::arg("feature_edges") = py::none(), py::arg("adaptive") = py::none(),
-      py::arg("sizing") = py::none(), py::arg("min_edge_length") = defaults.sizing.min_edge_length,
-      py::arg("max_edge_length") = defaults.sizing.max_edge_length,
-      py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true, py::arg("threads") = 0,
-      py::arg("progress") = nullptr);
+  m.def("remesh", &remesh, kRemeshDoc, py::arg("V"), py::arg("F"), py::arg("vertices") = py::none(),
+        py::arg("edge_length") = py::none(), py::kw_only(), py::arg("edge_length_rel") = py::none(),
+        py::arg("seeds") = py::none(), py::arg("seeds_file") = py::none(),
+        py::arg("iterations") = defaults.iterations, py::arg("samples") = kRemeshReportSamples,
+        py::arg("no_hausdorff") = false, py::arg("polish_rounds") = defaults.polish_rounds,
+        py::arg("shape_sweeps") = defaults.shape_sweeps,
+        py::arg("fit_rounds") = defaults.fit_rounds,
+        py::arg("topology_rounds") = defaults.topology_rounds, py::arg("optimizer") = "lbfgs",
+        py::arg("mode") = "both", py::arg("seed") = defaults.seed,
+        py::arg("feature_angle") = py::none(), py::arg("no_features") = false,
+        py::arg("feature_edges") = py::none(), py::arg("adaptive") = py::none(),
+        py::arg("sizing") = py::none(), py::arg("gap_gradation") = defaults.sizing.gap_gradation,
+        py::arg("min_edge_length") = defaults.sizing.min_edge_length,
+        py::arg("max_edge_length") = defaults.sizing.max_edge_length,
+        py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true,
+        py::arg("threads") = 0, py::arg("progress") = nullptr);
 }
 
 }  // namespace cvtmesh::python

@@ -290,6 +290,9 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
     all.feature_edges_dropped.push_back({std::min(a, b), std::max(a, b)});
   }
   all.sizes_adapted = all.sizes_adapted || part.sizes_adapted;
+  if (part.gap_length_min > 0)
+    all.gap_length_min = all.gap_length_min > 0 ? std::min(all.gap_length_min, part.gap_length_min)
+                                                : part.gap_length_min;
   all.count_grown += part.count_grown;
   all.links_mended += part.links_mended;
   all.islands_seeded += part.islands_seeded;

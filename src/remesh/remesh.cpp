@@ -42,6 +42,7 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
                                   scaled_settings(s, -exponent));
   check_output_size(s);
   std::optional<SizeField> field;
+  std::optional<TriangleMesh> split;  // where the field is made, if not on `mesh`
   if (s.sizing.active() && s.vertices == 0) {
     std::vector<Index> same(mesh.vertices.size());
     std::iota(same.begin(), same.end(), Index{0});
@@ -52,7 +53,7 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
       at_scale.scale = scale_before_sizing(mesh, s);
       features = detect_features(mesh, at_scale);
     }
-    field = make_size_field(mesh, same, s, features ? &*features : nullptr);
+    field = make_size_field(mesh, same, s, features ? &*features : nullptr, &split);
   }
   return unit_vertex_count(mesh, s, field ? &*field : nullptr);
 }

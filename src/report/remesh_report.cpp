@@ -37,6 +37,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["feature_edges_missing"] = r.feature_edges_missing;
   j["feature_edges_dropped"] = r.feature_edges_dropped.size();
   j["sizes_adapted"] = r.sizes_adapted;
+  j["gap_length_min"] = r.gap_length_min;
   j["feature_sector_min_deg"] = sector;
   j["links_mended"] = r.links_mended;
   j["islands_seeded"] = r.islands_seeded;
@@ -95,6 +96,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         "  features  {} sharp edges dropped: the output keeps the input's topology only without "
         "them\n",
         r.feature_edges_dropped.size());
+  if (r.gap_length_min > 0)
+    text += fmt::format(
+        "  sizing    even, graded down to feature gaps narrower than half an edge: shortest "
+        "target length {:.3g} of the even one\n",
+        r.gap_length_min);
   if (r.sizes_adapted)
     text +=
         "  sizing    adaptive: the output of even edge lengths did not keep the input's "

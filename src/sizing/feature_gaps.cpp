@@ -7,10 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
+#include <utility>
 
 #include "cvtmesh/sizing.hpp"
 #include "features/curve_projector.hpp"
+#include "features/edge_uses.hpp"
 #include "geometry/median.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
@@ -32,6 +35,11 @@ constexpr double kGoesOn = 2;
 // a point; the distance itself is to the stretch, exactly.
 constexpr double kSamplesPerSize = 8;
 constexpr double kMaxSamples = 2e6;
+// Two points face each other across a wedge when each is at most this many times as far from its
+// tip as the other.
+constexpr double kSidesRatio = 2;
+// Wedges narrower than this, and only these, narrow to their tips (capped_by_feature_gaps).
+constexpr double kWedgeDeg = 60;
 
 // The nearest point of the curves that faces a point of them, by the segments near it.
 class GapFinder {
@@ -58,6 +66,13 @@ class GapFinder {
     std::vector<std::uint32_t> segments;
   };
 
+  // Tips of wedges (vertices with a narrow sector between feature edges) whose sides are no gap
+  // for operator(); `tips` must outlive the finder.
+  void skip_wedges_at(const std::vector<Vec3>& tips) {
+    tips_ = &tips;
+    if (!tips.empty()) tip_tree_.emplace(tips);
+  }
+
   // The distance from p (on a curve going along `tangent`) to the nearest point of the curves
   // facing it, or `limit` if none is nearer.
   double operator()(const Vec3& p, const Vec3& tangent, double limit, Scratch& s) const {
@@ -80,23 +95,84 @@ class GapFinder {
       const Vec3 chord = (1 / d) * (q - p);
       if (std::abs(dot(chord, tangent)) > kFacingCos) continue;
       if (std::abs(dot(chord, ab)) > kFacingCos * std::sqrt(length2)) continue;
+      if (across_a_wedge(p, q, d, s)) continue;
       best = d;
     }
     return best;
   }
 
  private:
+  // Whether p and q, d apart, lie on the two sides of a wedge at one of tips_: about as far from
+  // its tip, which is further from both than they are from each other (the sides make an angle
+  // of about 60° or less there).
+  bool across_a_wedge(const Vec3& p, const Vec3& q, double d, Scratch& s) const {
+    if (!tip_tree_) return false;
+    // Sides at an angle of α are d = 2 r sin(α/2) apart at r from the tip: r ≤ 64 d for α ≥ 1°.
+    constexpr double kReach = 64;
+    tip_tree_->within(p, (kReach * d) * (kReach * d), s.near);
+    for (const Index k : s.near) {
+      const double rp = distance(p, (*tips_)[k]), rq = distance(q, (*tips_)[k]);
+      if (rp <= kSidesRatio * rq && rq <= kSidesRatio * rp && d < std::max(rp, rq)) return true;
+    }
+    return false;
+  }
+
   double step_;
   std::vector<Vec3> samples_;
   std::vector<std::uint32_t> sample_segment_;
   std::vector<std::pair<Vec3, Vec3>> segments_;
   std::optional<PointTree> tree_;
+  const std::vector<Vec3>* tips_ = nullptr;
+  std::optional<PointTree> tip_tree_;
 };
+
+// `sizes` lowered on each boundary loop shorter than π times them to its length over π: a hole
+// about as wide, whatever its shape. The facing rule misses the smallest holes, which are
+// triangles: no two sides of an equilateral one face each other.
+void cap_at_small_holes(const TriangleMesh& mesh, std::vector<double>& sizes) {
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  // Per vertex, where the boundary edges leaving it start in `next` (a pinch has several).
+  std::vector<std::pair<Index, Index>> boundary;  // (from, to) along the triangles' orientation
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    const bool alone = (i == 0 || uses[i - 1].edge != uses[i].edge) &&
+                       (i + 1 == uses.size() || uses[i + 1].edge != uses[i].edge);
+    if (!alone) continue;
+    const Triangle& t = mesh.triangles[uses[i].triangle()];
+    const std::size_t k = uses[i].corner % 3;
+    boundary.emplace_back(t[k], t[(k + 1) % 3]);
+  }
+  std::sort(boundary.begin(), boundary.end());
+  std::vector<bool> walked(boundary.size(), false);
+  std::vector<Index> loop;
+  for (std::size_t first = 0; first < boundary.size(); ++first) {
+    if (walked[first]) continue;
+    loop.clear();
+    double length = 0;
+    bool closed = false;
+    for (std::size_t e = first; !walked[e];) {
+      walked[e] = true;
+      const auto [a, b] = boundary[e];
+      loop.push_back(a);
+      length += distance(mesh.vertices[a], mesh.vertices[b]);
+      // The first boundary edge from b not walked yet.
+      auto it = std::lower_bound(boundary.begin(), boundary.end(), std::pair<Index, Index>{b, 0});
+      while (it != boundary.end() && it->first == b && walked[it - boundary.begin()]) ++it;
+      if (it == boundary.end() || it->first != b) {
+        closed = b == boundary[first].first;
+        break;
+      }
+      e = static_cast<std::size_t>(it - boundary.begin());
+    }
+    if (!closed) continue;
+    const double width = length / std::numbers::pi;
+    for (const Index v : loop) sizes[v] = std::min(sizes[v], width);
+  }
+}
 
 }  // namespace
 
 std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Features& features,
-                                           std::vector<double> sizes) {
+                                           std::vector<double> sizes, bool wedges) {
   const CurveProjector curves(mesh, features);
   // Each curve vertex (a corner once per curve it ends), with its curve and place on it.
   struct Place {
@@ -116,9 +192,13 @@ std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Featu
     }
   }
   if (places.empty() || !(total > 0)) return sizes;
-  const GapFinder gap_at(
-      mesh, features,
-      std::max(median_of(std::move(limits)) / kSamplesPerSize, total / kMaxSamples));
+  GapFinder gap_at(mesh, features,
+                   std::max(median_of(std::move(limits)) / kSamplesPerSize, total / kMaxSamples));
+  std::vector<Vec3> tips;
+  if (!wedges)
+    for (const NarrowAngle& tip : narrow_feature_angles(mesh, features, kWedgeDeg))
+      tips.push_back(tip.at);
+  gap_at.skip_wedges_at(tips);
 
   // Per place, the narrowest gap under its size that goes on: each alone, in parallel, then
   // lowered into `sizes` in order (the same whatever the thread count).
@@ -155,6 +235,7 @@ std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Featu
   });
   for (std::size_t k = 0; k < places.size(); ++k)
     sizes[places[k].v] = std::min(sizes[places[k].v], gap[k]);
+  cap_at_small_holes(mesh, sizes);
   return sizes;
 }
 

@@ -7,10 +7,23 @@
 
 #include "cvtmesh/errors.hpp"
 #include "sizing/gradation.hpp"
+#include "sizing/split_for_sizes.hpp"
 
 namespace cvtmesh {
 
 namespace {
+
+// The most that the lengths may change along an input edge (split_for_sizes): linear over a
+// triangle, the CVT's density h⁻⁴ then changes by at most 16 times over it.
+constexpr double kSplitRatio = 2;
+// Even sizes graded down to gaps: at most this share of the vertices goes to the grading, else it
+// is made gentler, by this factor at a time, at most this many times (to a gradation of 1 at
+// least). ChineseDragon-10kv.off at 1k, two holes 0.1% of an edge across, took 40% at a
+// gradation of 5, its Hausdorff mean tripled; spool.off at 5k, a strip a third of an edge wide,
+// 23%.
+constexpr double kMostGradedShare = 0.1;
+constexpr double kGentler = 0.75;
+constexpr int kGentlerSteps = 8;
 
 // Seeds per unit area for edges of length h: equilateral triangles, two per vertex.
 double seeds_per_area(double h) {
@@ -51,6 +64,11 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
                    const RemeshSettings& settings) {
   const SizingSettings& s = settings.sizing;
   const int sources = (s.adaptive > 0) + !s.edge_lengths.empty() + (s.edge_length_at != nullptr);
+  if (sources == 0) {
+    // Even lengths, graded down at the feature gaps only; no shorter than kGapFloor of them.
+    constexpr double kGapFloor = 1e-3;
+    return {std::vector<double>(mesh.vertices.size(), 1.0), {}, kGapFloor};
+  }
   if (sources != 1)
     throw InvalidArgument("give one sizing: adaptive, per-vertex edge lengths, or a function");
   if (s.adaptive > 0) {
@@ -91,13 +109,41 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
 void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
                       const SizingSettings& s, RawSizes& raw) {
   constexpr double kGapReach = 3;
-  if (!(s.adaptive > 0) || !features || features->curves.empty()) return;
+  // An even sizing grades down to gaps under half its length only: at wider ones the even
+  // output does as well (narrowing to gaps under the length itself cost stanford-bunny.obj at
+  // 5k and blade.off at 5k 5-17° of θmin on the corpus).
+  constexpr double kEvenGapReach = 0.5;
+  if ((s.active() && !(s.adaptive > 0)) || !features || features->curves.empty()) return;
+  const double reach = s.adaptive > 0 ? kGapReach : kEvenGapReach;
   std::vector<double> limit(raw.h.size());
-  for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = kGapReach * raw.h[v] * k;
-  const std::vector<double> capped = capped_by_feature_gaps(mesh, *features, limit);
+  for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = reach * raw.h[v] * k;
+  // An even sizing leaves wedges alone: grading down to a narrow angle gains no angle there.
+  const std::vector<double> capped =
+      capped_by_feature_gaps(mesh, *features, limit, /*wedges=*/s.adaptive > 0);
   raw.gap.assign(limit.size(), std::numeric_limits<double>::infinity());
   for (std::size_t v = 0; v < limit.size(); ++v)
     if (capped[v] < limit[v]) raw.gap[v] = capped[v];
+}
+
+// The gradation the lengths are graded at: an adaptive sizing's, an even one's at the gaps; 0
+// (none) for the caller's lengths.
+double gradation_of(const SizingSettings& s) {
+  return s.adaptive > 0 ? s.adaptive : !s.active() ? s.gap_gradation : 0;
+}
+
+// The share of the `vertices` that a field graded down to gaps takes from the even sizes: all
+// but those that its longest length (the even one) would spread over the whole surface.
+double graded_share(const TriangleMesh& mesh, const SizeField& field, std::size_t vertices) {
+  double longest = 0;
+  for (const Triangle& t : mesh.triangles)
+    for (const Index v : t) longest = std::max(longest, field.at_vertex(v));
+  return 1 - surface_area(mesh) / (std::sqrt(3.0) / 2 * longest * longest) /
+                 static_cast<double>(vertices);
+}
+
+// Whether no feature gap narrows the lengths.
+bool no_gap(const RawSizes& raw) {
+  return std::none_of(raw.gap.begin(), raw.gap.end(), [](double g) { return std::isfinite(g); });
 }
 
 // The lengths h·k, capped at the feature gaps (no lower than the raw floor, scaled), graded (for
@@ -113,13 +159,42 @@ std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
   if (!raw.gap.empty())
     for (std::size_t v = 0; v < raw.h.size(); ++v)
       if (used[v]) out[v] = std::min(out[v], std::max(raw.gap[v], raw.floor * k));
-  if (s.adaptive > 0) out = graded(mesh, std::move(out), s.adaptive);
+  if (const double g = gradation_of(s); g > 0) out = graded(mesh, std::move(out), g);
   for (std::size_t v = 0; v < raw.h.size(); ++v) {
     if (!used[v]) continue;
     if (s.min_edge_length > 0) out[v] = std::max(out[v], s.min_edge_length);
     if (s.max_edge_length > 0) out[v] = std::min(out[v], s.max_edge_length);
   }
   return out;
+}
+
+// The field of lengths scaled from `k` to the count `vertices` asks for (0: k as it is). One
+// factor k for the count. Without clamps or grading the count goes as k⁻²; they only flatten
+// that (grading shortens the long lengths more, clamps hold lengths still), so log count falls
+// with log k at a slope between -2 and 0, and this step, exact for k⁻², never overshoots. Where
+// the clamps flatten it so much that the steps crawl, bisection on log k finishes (a count the
+// clamps cannot reach gets the nearest).
+SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettings& s, double k,
+                 std::size_t vertices) {
+  const std::vector<bool> used = used_vertices(mesh);
+  if (vertices == 0) return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
+  const auto count = [&](double x) {
+    return SizeField(mesh, scaled_sizes(mesh, h, used, x, s)).vertex_count();
+  };
+  const auto n = static_cast<double>(vertices);
+  for (int step = 0; step < 12; ++step) {
+    // The field of the k that reaches the count is returned as it is: not graded again.
+    SizeField field(mesh, scaled_sizes(mesh, h, used, k, s));
+    const double c = field.vertex_count();
+    if (std::abs(c / n - 1) < 1e-3) return field;
+    k *= std::sqrt(c / n);
+  }
+  double lo = std::log(k) - 20, hi = std::log(k) + 20;
+  for (int step = 0; step < 60; ++step) {
+    const double mid = (lo + hi) / 2;
+    (count(std::exp(mid)) > n ? lo : hi) = mid;
+  }
+  return SizeField(mesh, scaled_sizes(mesh, h, used, std::exp((lo + hi) / 2), s));
 }
 
 }  // namespace
@@ -174,56 +249,74 @@ std::vector<double> SizeField::steps_along(const std::vector<Index>& polyline) c
 }
 
 std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
-                                         const RemeshSettings& settings, const Features* features) {
+                                         const RemeshSettings& settings, Features* features,
+                                         std::optional<TriangleMesh>* split_mesh) {
   const SizingSettings& s = settings.sizing;
-  if (!s.active()) return std::nullopt;
+  const bool gaps_only = !s.active() && s.gap_gradation > 0;
+  if (!s.active() && !(gaps_only && features && !features->curves.empty())) return std::nullopt;
   const double min = s.min_edge_length, max = s.max_edge_length;
   if (!(min >= 0) || !(max >= 0) || !std::isfinite(min) || !std::isfinite(max))
     throw InvalidArgument("the edge length clamps must be finite and not negative");
   if (min > 0 && max > 0 && min > max)
     throw InvalidArgument("the minimum edge length is above the maximum");
   RawSizes h = raw_sizes(mesh, new_id, settings);
-  const std::vector<bool> used = used_vertices(mesh);
   // Initial seeds set the count as `vertices` does.
   const std::size_t vertices =
       settings.vertices > 0 ? settings.vertices : settings.initial_seeds.size();
+  double k = 1;  // the scale of the lengths, first estimate
   if (vertices > 0) {
-    // One factor k for the count. Without clamps or grading the count goes as k⁻²; they only
-    // flatten that (grading shortens the long lengths more, clamps hold lengths still), so
-    // log count falls with log k at a slope between -2 and 0, and this step, exact for k⁻²,
-    // never overshoots. Where the clamps flatten it so much that the steps crawl, bisection on
-    // log k finishes (a count the clamps cannot reach gets the nearest).
-    const auto count = [&](double k) {
-      return SizeField(mesh, scaled_sizes(mesh, h, used, k, s)).vertex_count();
-    };
-    const auto n = static_cast<double>(vertices);
-    double k = std::sqrt(count(1.0) / n);
-    add_feature_gaps(mesh, features, k, s, h);
-    for (int step = 0; step < 12; ++step) {
-      // The field of the k that reaches the count is returned as it is: not graded again.
-      SizeField field(mesh, scaled_sizes(mesh, h, used, k, s));
-      const double c = field.vertex_count();
-      if (std::abs(c / n - 1) < 1e-3) return field;
-      k *= std::sqrt(c / n);
-    }
-    double lo = std::log(k) - 20, hi = std::log(k) + 20;
-    for (int step = 0; step < 60; ++step) {
-      const double mid = (lo + hi) / 2;
-      (count(std::exp(mid)) > n ? lo : hi) = mid;
-    }
-    return SizeField(mesh, scaled_sizes(mesh, h, used, std::exp((lo + hi) / 2), s));
+    k = std::sqrt(
+        SizeField(mesh, scaled_sizes(mesh, h, used_vertices(mesh), 1.0, s)).vertex_count() /
+        static_cast<double>(vertices));
+  } else {
+    const double length = settings.edge_length != 0 ? settings.edge_length
+                          : settings.edge_length_rel != 0
+                              ? settings.edge_length_rel * bounding_box(mesh).diagonal()
+                              : 0;
+    if (length == 0 && s.adaptive > 0)
+      throw InvalidArgument("adaptive sizing needs a vertex count or an edge length");
+    if (length != 0 && !(length > 0 && std::isfinite(length)))
+      throw InvalidArgument("the edge length must be positive");
+    if (length > 0) k = length / area_median(mesh, h.h);
   }
-  const double length = settings.edge_length != 0 ? settings.edge_length
-                        : settings.edge_length_rel != 0
-                            ? settings.edge_length_rel * bounding_box(mesh).diagonal()
-                            : 0;
-  if (length == 0 && s.adaptive > 0)
-    throw InvalidArgument("adaptive sizing needs a vertex count or an edge length");
-  if (length != 0 && !(length > 0 && std::isfinite(length)))
-    throw InvalidArgument("the edge length must be positive");
-  const double k = length > 0 ? length / area_median(mesh, h.h) : 1.0;
   add_feature_gaps(mesh, features, k, s, h);
-  return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
+  if (gaps_only && no_gap(h)) return std::nullopt;
+  // The field at gradation `g` (for an even sizing; the settings' otherwise), on `mesh` split
+  // for it into `storage` where the lengths change fast, with `moved` (the features) moved
+  // onto it.
+  const auto field_at = [&](double g, std::optional<TriangleMesh>& storage, Features* moved) {
+    SizingSettings at = s;
+    if (gaps_only) at.gap_gradation = g;
+    if (split_mesh) {
+      std::optional<SplitForSizes> split = split_for_sizes(
+          mesh, scaled_sizes(mesh, h, used_vertices(mesh), k, at), kSplitRatio, gradation_of(at));
+      if (split) {
+        RawSizes on_split = h;  // linear along the halved edges
+        for (const Edge& e : split->halved) {
+          on_split.h.push_back((on_split.h[e[0]] + on_split.h[e[1]]) / 2);
+          if (!h.gap.empty()) on_split.gap.push_back(std::numeric_limits<double>::infinity());
+        }
+        if (moved) *moved = split_features(*moved, *split, mesh.vertices.size());
+        storage = std::move(split->mesh);
+        return fitted(*storage, on_split, at, k, vertices);
+      }
+    }
+    storage.reset();
+    return fitted(mesh, h, at, k, vertices);
+  };
+  double g = gradation_of(s);
+  if (gaps_only && vertices > 0) {
+    // The graded sizes take vertices from the rest of the surface, whose edges then lengthen
+    // and its chord error with them: gentler grading where they would take too many.
+    for (int step = 0; step < kGentlerSteps && g > 1; ++step) {
+      std::optional<TriangleMesh> trial;
+      const SizeField field = field_at(g, trial, nullptr);
+      if (graded_share(trial ? *trial : mesh, field, vertices) <= kMostGradedShare) break;
+      g = std::max(1.0, g * kGentler);
+    }
+  }
+  std::optional<TriangleMesh> scratch;
+  return field_at(g, split_mesh ? *split_mesh : scratch, features);
 }
 
 }  // namespace cvtmesh

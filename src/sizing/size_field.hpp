@@ -36,11 +36,15 @@ class SizeField {
 // The size field the settings ask for on `mesh` (the remesher's copy: spatially sorted by
 // `new_id`, scaled to about unit size, with the settings scaled alike), scaled so that the
 // output size comes out as `settings` asks (see RemeshSettings); unset when the sizing is not
-// active. An adaptive sizing given `features` (ids of `mesh`) also narrows to their gaps
-// (capped_by_feature_gaps). Throws InvalidArgument for bad sizes or clamps, and for an adaptive
-// sizing without an output size.
+// active and no feature gap narrows the even lengths (SizingSettings::gap_gradation). An
+// adaptive or even sizing given `features` (ids of `mesh`) narrows to their gaps
+// (capped_by_feature_gaps). Given `split_mesh`, where the lengths change too fast along an edge
+// the field is made on a split copy of `mesh` (split_for_sizes) put there, and `features` are
+// moved onto it. Throws InvalidArgument for bad sizes or clamps, and for an adaptive sizing
+// without an output size.
 std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
                                          const RemeshSettings& settings,
-                                         const Features* features = nullptr);
+                                         Features* features = nullptr,
+                                         std::optional<TriangleMesh>* split_mesh = nullptr);
 
 }  // namespace cvtmesh
