@@ -53,16 +53,21 @@ TEST(FeatureGaps, AStripIsAsNarrowAsItIsWideAndItsRightAngledCornersNarrowNothin
 
 TEST(FeatureGaps, AClosedCurveIsAsNarrowAsItsWidth) {
   // A circle of radius 1 faces itself at 120° and beyond: √3 away (on 96 segments, within one
-  // segment's turn).
+  // segment's turn). As a boundary loop 2π long, it also gets its length over 2π, 1, about six
+  // edges around it: the smaller.
   const TriangleMesh round = disk(8, 96);
   const std::vector<double> sizes =
       capped_by_feature_gaps(round, outline(round), std::vector<double>(round.vertices.size(), 5));
   for (Index v = 0; v < round.vertices.size(); ++v) {
     if (std::abs(norm(round.vertices[v]) - 1) < 1e-12)
-      EXPECT_NEAR(sizes[v], std::sqrt(3.0), 0.04);
+      EXPECT_NEAR(sizes[v], 1.0, 0.001);
     else
       EXPECT_EQ(sizes[v], 5.0);
   }
+  // Sizes under 1 see only the facing rule: none narrower than √3 there.
+  const std::vector<double> small = capped_by_feature_gaps(
+      round, outline(round), std::vector<double>(round.vertices.size(), 0.9));
+  EXPECT_TRUE(std::all_of(small.begin(), small.end(), [](double s) { return s == 0.9; }));
 }
 
 TEST(FeatureGaps, AWedgeUnder60DegreesNarrowsTowardsItsTip) {

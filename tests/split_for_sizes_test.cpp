@@ -127,14 +127,15 @@ TEST(SplitForSizes, FeatureCurvesGoThroughTheMidpointsOfTheirHalvedEdges) {
   EXPECT_GT(vertices_after, vertices_before);  // the outline's edges at the corner were halved
 }
 
-TEST(SplitForSizes, ATriangularHoleIsAGapAsWideAsItsLengthOverPi) {
-  // No two sides of a triangle face each other (feature_gaps' rule): the hole's length does.
+TEST(SplitForSizes, ATriangularHoleGetsItsLengthOverTwoPi) {
+  // No two sides of a triangle face each other (feature_gaps' rule): the hole's length sets its
+  // sizes, about six edges around it.
   const TriangleMesh m = plate_with_pinhole(6, 1e-3);
   const std::vector<double> sizes = capped_by_feature_gaps(
       m, detect_features(m, FeatureSettings{}), std::vector<double>(m.vertices.size(), 0.1));
   const std::size_t n = m.vertices.size();
   const Vec3 &a = m.vertices[n - 3], &b = m.vertices[n - 2], &c = m.vertices[n - 1];
-  const double width = (distance(a, b) + distance(b, c) + distance(c, a)) / std::numbers::pi;
+  const double width = (distance(a, b) + distance(b, c) + distance(c, a)) / (2 * std::numbers::pi);
   for (std::size_t v = n - 3; v < n; ++v) EXPECT_NEAR(sizes[v], width, 1e-15);
   EXPECT_EQ(sizes[0], 0.1);  // the plate's own outline is long
 }

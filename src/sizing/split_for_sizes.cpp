@@ -13,6 +13,13 @@ namespace {
 // A safety net, never met in practice: the splits stop after this many added vertices per given
 // triangle (graded sizes converge towards the small end within a few halvings of each edge).
 constexpr std::size_t kMostPerTriangle = 8;
+// Bounds on the work for one triangle: the halvings before its own longest edge is halved, and
+// the steps along a longest-edge path (an edge reached at the last step is halved as if it ended
+// the path). A triangle far smaller than its neighbours would have them refined down to its size
+// first: at a hole 0.1% of an edge across (ChineseDragon-10kv.off), paths thousands of triangles
+// long, for minutes. Left unsplit, such a triangle is smaller than a cell anyway.
+constexpr int kMostRounds = 32;
+constexpr int kLongestPath = 16;
 
 std::uint64_t key_of(Index a, Index b) {
   if (a > b) std::swap(a, b);
@@ -85,10 +92,20 @@ std::optional<SplitForSizes> split_for_sizes(const TriangleMesh& mesh,
     on_edge.erase(it);
     const auto m = static_cast<Index>(out.mesh.vertices.size());
     const Vec3 pa = out.mesh.vertices[a], pb = out.mesh.vertices[b];
-    out.mesh.vertices.push_back(0.5 * (pa + pb));
+    const Vec3 pm = 0.5 * (pa + pb);
     double s = (size[a] + size[b]) / 2;
-    if (gradation > 0)
+    if (gradation > 0) {
+      // Graded from every vertex it gets an edge to: the ends, and the vertex across the edge
+      // in each triangle on it. The midpoint of a needle's long side lies close to the vertex
+      // across; bigger than that vertex's size allows, it would make the short new edge need a
+      // split, and so on down to nothing.
       s = std::min(s, std::min(size[a], size[b]) + distance(pa, pb) / 2 / gradation);
+      for (const std::size_t t : on)
+        for (const Index c : triangles[t])
+          if (c != a && c != b)
+            s = std::min(s, size[c] + distance(pm, out.mesh.vertices[c]) / gradation);
+    }
+    out.mesh.vertices.push_back(pm);
     size.push_back(s);
     out.halved.push_back({a, b});
     for (const std::size_t t : on) {
@@ -123,10 +140,10 @@ std::optional<SplitForSizes> split_for_sizes(const TriangleMesh& mesh,
     if (!needs_split(t)) continue;
     const Edge own = longest_of(t);
     if (own[0] == own[1]) continue;  // a degenerate triangle: nothing to halve
-    for (bool done = false; !done && out.halved.size() < most;) {
+    for (int round = 0; round < kMostRounds && out.halved.size() < most; ++round) {
       std::size_t at = t;
       Edge e = own;
-      for (;;) {
+      for (int step = 0; step < kLongestPath; ++step) {
         const std::vector<std::size_t>& on = on_edge.at(key_of(e[0], e[1]));
         if (on.size() != 2) break;  // a boundary or non-manifold edge ends the path
         const std::size_t beyond = on[0] == at ? on[1] : on[0];
@@ -135,8 +152,8 @@ std::optional<SplitForSizes> split_for_sizes(const TriangleMesh& mesh,
         at = beyond;
         e = next;
       }
-      done = e == own;
       halve(e[0], e[1]);
+      if (e == own) break;
     }
   }
   // Children where their parent was: the triangle order stays spatial.
