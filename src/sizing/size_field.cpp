@@ -305,18 +305,23 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     return fitted(mesh, h, at, k, vertices);
   };
   double g = gradation_of(s);
+  std::optional<TriangleMesh> scratch;  // never split into: only with split_mesh
+  std::optional<TriangleMesh>& storage = split_mesh ? *split_mesh : scratch;
   if (gaps_only && vertices > 0) {
     // The graded sizes take vertices from the rest of the surface, whose edges then lengthen
-    // and its chord error with them: gentler grading where they would take too many.
+    // and its chord error with them: gentler grading where they would take too many. The field
+    // that passes is the one returned.
     for (int step = 0; step < kGentlerSteps && g > 1; ++step) {
-      std::optional<TriangleMesh> trial;
-      const SizeField field = field_at(g, trial, nullptr);
-      if (graded_share(trial ? *trial : mesh, field, vertices) <= kMostGradedShare) break;
+      Features moved = features ? *features : Features{};
+      SizeField field = field_at(g, storage, features ? &moved : nullptr);
+      if (graded_share(storage ? *storage : mesh, field, vertices) <= kMostGradedShare) {
+        if (features) *features = std::move(moved);
+        return field;
+      }
       g = std::max(1.0, g * kGentler);
     }
   }
-  std::optional<TriangleMesh> scratch;
-  return field_at(g, split_mesh ? *split_mesh : scratch, features);
+  return field_at(g, storage, features);
 }
 
 }  // namespace cvtmesh
