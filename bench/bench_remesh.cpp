@@ -16,6 +16,12 @@
 //   BM_AdaptiveVsUniform/<mesh>: the default remesh to 2k vertices, uniform and --adaptive 1.5
 //     (issue 20), one after the other: time_ratio = adaptive / uniform (local feature size
 //     included), and each one's θmin, Qmin and seeds added by topology control.
+//   BM_GapGradedVsEven/<mesh>: the default remesh to 5k vertices, whose even sizes grade down to
+//     feature gaps under half an edge (SizingSettings::gap_gradation), and the same with even
+//     sizes everywhere, one after the other: time_ratio = graded / even (the size field, the
+//     split of the input and the extra topology work included), and each one's θmin and Qmin.
+//     Meshes: corpus/ChineseDragon-10kv.off (two holes 0.1-0.3% of an edge across) and
+//     corpus/spool.off (a strip a third of an edge wide).
 // Meshes: ../shared/data/{bunny.off, igea.ply}; cases skip when they are absent.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -136,6 +142,35 @@ void BM_AdaptiveVsUniform(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AdaptiveVsUniform)
+    ->DenseRange(0, 1)
+    ->UseManualTime()
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+
+const char* const kGapMeshes[] = {"corpus/ChineseDragon-10kv.off", "corpus/spool.off"};
+
+void BM_GapGradedVsEven(benchmark::State& state) {
+  const TriangleMesh* input = load(state, kGapMeshes[state.range(0)]);
+  if (!input) return;
+  for (auto _ : state) {
+    double time[2];
+    for (const int even : {0, 1}) {
+      RemeshSettings s;
+      s.vertices = 5000;
+      if (even) s.sizing.gap_gradation = 0;
+      const auto start = Clock::now();
+      const RemeshResult r = remesh(*input, s);
+      time[even] = seconds(start);
+      const QualityReport q = measure_quality(r.mesh);
+      const std::string name = even ? "even_" : "graded_";
+      state.counters[name + "theta_min"] = q.angle_min_deg;
+      state.counters[name + "q_min"] = q.q_min;
+    }
+    state.SetIterationTime(time[0] + time[1]);
+    state.counters["time_ratio"] = time[0] / time[1];
+  }
+}
+BENCHMARK(BM_GapGradedVsEven)
     ->DenseRange(0, 1)
     ->UseManualTime()
     ->Unit(benchmark::kSecond)

@@ -44,7 +44,9 @@ std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettin
 // that pass each other at one spot only. Only gaps under a vertex's size are looked for: the
 // size bounds the search. With `wedges` false, the sides of a wedge under 60° are no gap near its
 // tip (about as far from it as each other): its narrow angle stays in any output, and sizes
-// graded down to its tip only crowd small triangles around it.
+// graded down to its tip only crowd small triangles around it. Each boundary loop shorter than
+// 2π times a vertex's size also caps that vertex at the loop's length over 2π, about six edges
+// around a small hole (no two sides of a triangular one face each other).
 std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Features& features,
                                            std::vector<double> sizes, bool wedges = true);
 
@@ -82,7 +84,9 @@ struct SizingSettings {
   // triangles, as in quality meshers (Shewchuk's Triangle): the hole's short edges next to edges
   // of the even length make slivers (ChineseDragon-10kv.off, two holes 0.1-0.3% of an edge across:
   // θmin 0.2-4.4° at 1k-10k). Gentler than adaptive's 1.5: steeper grading cost 5-15° of θmin
-  // around the holes. 0: even lengths everywhere.
+  // around the holes. With a vertex count, made gentler still (to 1 at least) where the grading
+  // would take over a tenth of the vertices from the rest of the surface. 0: even lengths
+  // everywhere.
   double gap_gradation = 5;
 
   bool active() const { return adaptive > 0 || !edge_lengths.empty() || edge_length_at; }
