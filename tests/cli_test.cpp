@@ -724,5 +724,29 @@ TEST(Cli, SizingFromAFileAndAdaptive) {
             2);
 }
 
+// A unit sheet of 100×100 quads with one triangle missing: a hole far narrower than an edge at
+// 300 vertices. The even sizes grade down to it by default, the report says how far, and
+// --gap-gradation 0 keeps them even; it goes with neither --adaptive nor --sizing.
+TEST(Cli, EvenSizesGradeDownToAPinholeUnlessToldNot) {
+  const TempDir dir;
+  TriangleMesh sheet = mapped_grid(100, 100, [](double u, double v) { return Vec3{u, v, 0}; });
+  sheet.triangles.erase(sheet.triangles.begin() + 2 * (50 * 100 + 50));
+  write_mesh(dir / "sheet.off", sheet);
+  const std::string files = quoted(dir / "sheet.off") + " " + quoted(dir / "out.off");
+  CliRun r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 " + files);
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["gap_length_min"].get<double>(), 0);
+  EXPECT_LT(j["gap_length_min"].get<double>(), 0.5);
+  EXPECT_TRUE(j["same_topology"].get<bool>());
+  r = run_cli(dir, "remesh --no-hausdorff --vertices 300 " + files);
+  EXPECT_NE(r.out.find("graded down to feature gaps"), std::string::npos) << r.out;
+  r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 --gap-gradation 0 " + files);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["gap_length_min"].get<double>(), 0);
+  EXPECT_EQ(run_cli(dir, "remesh --vertices 300 --adaptive --gap-gradation 2 " + files).code, 2);
+  EXPECT_EQ(run_cli(dir, "remesh --vertices 300 --gap-gradation -1 " + files).code, 2);
+}
+
 }  // namespace
 }  // namespace cvtmesh
