@@ -133,8 +133,10 @@ class GapFinder {
 // round: θmin 18.8° at length over π, 40.3° at length over 2π).
 void cap_at_small_holes(const TriangleMesh& mesh, std::vector<double>& sizes) {
   const std::vector<EdgeUse> uses = edge_uses(mesh);
-  // Per vertex, where the boundary edges leaving it start in `next` (a pinch has several).
-  std::vector<std::pair<Index, Index>> boundary;  // (from, to) along the triangles' orientation
+  // The boundary edges as (from, to) along their triangle's orientation, sorted by `from` (a
+  // pinch has several from one vertex; a walk through one may join its two loops into one
+  // longer loop, whose cap is then only weaker).
+  std::vector<std::pair<Index, Index>> boundary;
   for (std::size_t i = 0; i < uses.size(); ++i) {
     const bool alone = (i == 0 || uses[i - 1].edge != uses[i].edge) &&
                        (i + 1 == uses.size() || uses[i + 1].edge != uses[i].edge);
