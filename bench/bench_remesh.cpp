@@ -118,20 +118,29 @@ void BM_Remesh(benchmark::State& state) {
 }
 BENCHMARK(BM_Remesh)->DenseRange(0, 1)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
 
-void BM_AdaptiveVsUniform(benchmark::State& state) {
-  const TriangleMesh* input = load(state, kMeshes[state.range(0)]);
-  if (!input) return;
+// One way to remesh in a comparison: its counters' prefix, and what it changes in the defaults.
+struct Way {
+  const char* name;
+  void (*set)(RemeshSettings&);
+};
+
+// The default remesh of `input` to `vertices`, one way and then the other, in the same run: each
+// one's θmin, Qmin and seeds added by topology control as counters, and time_ratio = the second's
+// time over the first's.
+void remesh_two_ways(benchmark::State& state, const TriangleMesh& input, std::size_t vertices,
+                     const Way& first, const Way& second) {
   for (auto _ : state) {
     double time[2];
-    for (const int adaptive : {0, 1}) {
+    for (const int k : {0, 1}) {
+      const Way& way = k == 0 ? first : second;
       RemeshSettings s;
-      s.vertices = 2000;
-      s.sizing.adaptive = adaptive ? 1.5 : 0;
+      s.vertices = vertices;
+      way.set(s);
       const auto start = Clock::now();
-      const RemeshResult r = remesh(*input, s);
-      time[adaptive] = seconds(start);
+      const RemeshResult r = remesh(input, s);
+      time[k] = seconds(start);
       const QualityReport q = measure_quality(r.mesh);
-      const std::string name = adaptive ? "adaptive_" : "uniform_";
+      const std::string name = way.name;
       state.counters[name + "theta_min"] = q.angle_min_deg;
       state.counters[name + "q_min"] = q.q_min;
       state.counters[name + "seeds_added"] =
@@ -140,6 +149,13 @@ void BM_AdaptiveVsUniform(benchmark::State& state) {
     state.SetIterationTime(time[0] + time[1]);
     state.counters["time_ratio"] = time[1] / time[0];
   }
+}
+
+void BM_AdaptiveVsUniform(benchmark::State& state) {
+  const TriangleMesh* input = load(state, kMeshes[state.range(0)]);
+  if (!input) return;
+  remesh_two_ways(state, *input, 2000, {"uniform_", [](RemeshSettings&) {}},
+                  {"adaptive_", [](RemeshSettings& s) { s.sizing.adaptive = 1.5; }});
 }
 BENCHMARK(BM_AdaptiveVsUniform)
     ->DenseRange(0, 1)
@@ -152,23 +168,9 @@ const char* const kGapMeshes[] = {"corpus/ChineseDragon-10kv.off", "corpus/spool
 void BM_GapGradedVsEven(benchmark::State& state) {
   const TriangleMesh* input = load(state, kGapMeshes[state.range(0)]);
   if (!input) return;
-  for (auto _ : state) {
-    double time[2];
-    for (const int even : {0, 1}) {
-      RemeshSettings s;
-      s.vertices = 5000;
-      if (even) s.sizing.gap_gradation = 0;
-      const auto start = Clock::now();
-      const RemeshResult r = remesh(*input, s);
-      time[even] = seconds(start);
-      const QualityReport q = measure_quality(r.mesh);
-      const std::string name = even ? "even_" : "graded_";
-      state.counters[name + "theta_min"] = q.angle_min_deg;
-      state.counters[name + "q_min"] = q.q_min;
-    }
-    state.SetIterationTime(time[0] + time[1]);
-    state.counters["time_ratio"] = time[0] / time[1];
-  }
+  remesh_two_ways(state, *input, 5000,
+                  {"even_", [](RemeshSettings& s) { s.sizing.gap_gradation = 0; }},
+                  {"graded_", [](RemeshSettings&) {}});
 }
 BENCHMARK(BM_GapGradedVsEven)
     ->DenseRange(0, 1)

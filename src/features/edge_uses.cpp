@@ -29,4 +29,36 @@ std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
   return edges;
 }
 
+std::optional<std::vector<BoundaryLoop>> boundary_loops(const TriangleMesh& mesh,
+                                                        const std::vector<EdgeUse>& uses) {
+  // Per vertex, the boundary edge use that arrives at it along its triangle: the loop's step
+  // from it goes back along that edge.
+  constexpr std::size_t kNone = ~std::size_t{0};
+  std::vector<std::size_t> into(mesh.vertices.size(), kNone);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    if (j == i + 1) {
+      const Triangle& t = mesh.triangles[uses[i].triangle()];
+      const Index b = t[(uses[i].corner + 1) % 3];
+      if (into[b] != kNone) return std::nullopt;
+      into[b] = i;
+    }
+    i = j;
+  }
+  std::vector<BoundaryLoop> loops;
+  std::vector<bool> seen(mesh.vertices.size(), false);
+  for (Index start = 0; start < into.size(); ++start) {
+    if (into[start] == kNone || seen[start]) continue;
+    BoundaryLoop& loop = loops.emplace_back();
+    for (Index v = start; into[v] != kNone && !seen[v];) {
+      seen[v] = true;
+      loop.vertices.push_back(v);
+      loop.uses.push_back(into[v]);
+      v = mesh.triangles[uses[into[v]].triangle()][uses[into[v]].corner % 3];
+    }
+  }
+  return loops;
+}
+
 }  // namespace cvtmesh

@@ -3,6 +3,7 @@
 // has no other connectivity).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "cvtmesh/features.hpp"
@@ -27,5 +28,19 @@ std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh);
 
 // The distinct edges of a mesh, each with the smaller vertex id first, sorted.
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh);
+
+// A boundary loop walked against its triangles' orientation: each step (vertices[i],
+// vertices[i + 1]) runs the other way in its triangle, so that a triangle closing the hole on
+// three consecutive loop vertices a, b, c is (a, b, c). `uses[i]` is that step's edge use (an
+// index into the `uses` the loops were found in).
+struct BoundaryLoop {
+  std::vector<Index> vertices;
+  std::vector<std::size_t> uses;
+};
+// The boundary loops of `mesh` (edges of one triangle), from `uses` = edge_uses(mesh), each
+// starting at its smallest vertex id, in that order; none when a vertex has two boundary edges
+// leaving it (a non-manifold vertex, where loops are not defined).
+std::optional<std::vector<BoundaryLoop>> boundary_loops(const TriangleMesh& mesh,
+                                                        const std::vector<EdgeUse>& uses);
 
 }  // namespace cvtmesh

@@ -16,15 +16,8 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-struct BoundaryStep {
-  Index to = 0;
-  Index opposite = 0;  // the third vertex of the triangle the edge belongs to
-  bool opened = false;
-  bool seen = false;
-};
-
-// The boundary loops of `mesh`, each walked against its triangles' orientation, so that a
-// triangle closing the hole on three consecutive loop vertices a, b, c is (a, b, c). Only the
+// The boundary loops of `mesh` (boundary_loops: a triangle closing the hole on three consecutive
+// loop vertices a, b, c is (a, b, c)), with each step's third vertex in its triangle. Only the
 // loops made wholly of opened edges (edges of `removed`), unless `every`; nothing when a vertex
 // has two boundary edges leaving it (a non-manifold vertex: make_manifold leaves none).
 struct Loop {
@@ -38,31 +31,15 @@ std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
   for (const Triangle& t : removed)
     for (int k = 0; k < 3; ++k) opened.push_back(edge_of(t[k], t[(k + 1) % 3]));
   std::sort(opened.begin(), opened.end());
-
-  std::vector<std::optional<BoundaryStep>> from(mesh.vertices.size());
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
-    if (j == i + 1) {
-      const Triangle& t = mesh.triangles[uses[i].triangle()];
-      const std::size_t k = uses[i].corner % 3;
-      const Index a = t[k], b = t[(k + 1) % 3];
-      if (from[b]) return std::nullopt;
-      from[b] = BoundaryStep{a, t[(k + 2) % 3],
-                             std::binary_search(opened.begin(), opened.end(), uses[i].edge)};
-    }
-    i = j;
-  }
+  const std::optional<std::vector<BoundaryLoop>> boundary = boundary_loops(mesh, uses);
+  if (!boundary) return std::nullopt;
   std::vector<Loop> loops;
-  for (Index start = 0; start < from.size(); ++start) {
-    if (!from[start] || from[start]->seen) continue;
-    Loop loop;
+  for (const BoundaryLoop& b : *boundary) {
+    Loop loop{b.vertices, {}};
     bool all_opened = true;
-    for (Index v = start; from[v] && !from[v]->seen; v = from[v]->to) {
-      from[v]->seen = true;
-      all_opened = all_opened && from[v]->opened;
-      loop.vertices.push_back(v);
-      loop.opposite.push_back(from[v]->opposite);
+    for (const std::size_t i : b.uses) {
+      all_opened = all_opened && std::binary_search(opened.begin(), opened.end(), uses[i].edge);
+      loop.opposite.push_back(mesh.triangles[uses[i].triangle()][(uses[i].corner + 2) % 3]);
     }
     if (all_opened || every) loops.push_back(std::move(loop));
   }

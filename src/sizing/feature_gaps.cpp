@@ -133,43 +133,18 @@ class GapFinder {
 // round: θmin 18.8° at length over π, 40.3° at length over 2π).
 void cap_at_small_holes(const TriangleMesh& mesh, std::vector<double>& sizes) {
   const std::vector<EdgeUse> uses = edge_uses(mesh);
-  // The boundary edges as (from, to) along their triangle's orientation, sorted by `from` (a
-  // pinch has several from one vertex; a walk through one may join its two loops into one
-  // longer loop, whose cap is then only weaker).
-  std::vector<std::pair<Index, Index>> boundary;
-  for (std::size_t i = 0; i < uses.size(); ++i) {
-    const bool alone = (i == 0 || uses[i - 1].edge != uses[i].edge) &&
-                       (i + 1 == uses.size() || uses[i + 1].edge != uses[i].edge);
-    if (!alone) continue;
-    const Triangle& t = mesh.triangles[uses[i].triangle()];
-    const std::size_t k = uses[i].corner % 3;
-    boundary.emplace_back(t[k], t[(k + 1) % 3]);
-  }
-  std::sort(boundary.begin(), boundary.end());
-  std::vector<bool> walked(boundary.size(), false);
-  std::vector<Index> loop;
-  for (std::size_t first = 0; first < boundary.size(); ++first) {
-    if (walked[first]) continue;
-    loop.clear();
+  // None at a vertex with two boundary edges leaving it, where loops are not defined (repair
+  // leaves none: it keeps such a vertex as one copy per fan).
+  const std::optional<std::vector<BoundaryLoop>> loops = boundary_loops(mesh, uses);
+  if (!loops) return;
+  for (const BoundaryLoop& loop : *loops) {
+    // Summed along the triangles' orientation (the loop backwards), from its smallest vertex.
+    const std::size_t n = loop.vertices.size();
     double length = 0;
-    bool closed = false;
-    for (std::size_t e = first; !walked[e];) {
-      walked[e] = true;
-      const auto [a, b] = boundary[e];
-      loop.push_back(a);
-      length += distance(mesh.vertices[a], mesh.vertices[b]);
-      // The first boundary edge from b not walked yet.
-      auto it = std::lower_bound(boundary.begin(), boundary.end(), std::pair<Index, Index>{b, 0});
-      while (it != boundary.end() && it->first == b && walked[it - boundary.begin()]) ++it;
-      if (it == boundary.end() || it->first != b) {
-        closed = b == boundary[first].first;
-        break;
-      }
-      e = static_cast<std::size_t>(it - boundary.begin());
-    }
-    if (!closed) continue;
+    for (std::size_t i = n; i > 0; --i)
+      length += distance(mesh.vertices[loop.vertices[i % n]], mesh.vertices[loop.vertices[i - 1]]);
     const double width = length / (2 * std::numbers::pi);
-    for (const Index v : loop) sizes[v] = std::min(sizes[v], width);
+    for (const Index v : loop.vertices) sizes[v] = std::min(sizes[v], width);
   }
 }
 
