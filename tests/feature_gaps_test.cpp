@@ -91,37 +91,91 @@ TEST(FeatureGaps, AWedgeUnder60DegreesNarrowsTowardsItsTip) {
   EXPECT_GT(checked, 70);
 }
 
-TEST(FeatureGaps, AWedgeWithItsTipNarrowsOnlyWhereWedgesAreAskedFor) {
-  // The sheet between two rays 20° apart from their common tip to radius 1, in rings: the tip a
-  // corner with a 20° sector. An even sizing leaves it alone (SizingSettings::gap_gradation).
-  const double wedge = 20 * std::numbers::pi / 180;
-  constexpr int kRings = 90, kAcross = 12;
+// The sheet between two rays `deg` apart from their common tip (vertex 0) to `radius`, in rings:
+// the tip a corner with a sector of `deg`. Vertex at(i, 0) lies on the ray y = 0 at radius
+// i / kRings of `radius`.
+constexpr int kRings = 90, kAcross = 12;
+Index at(int i, int j) {
+  return static_cast<Index>(1 + (i - 1) * (kAcross + 1) + j);
+}
+TriangleMesh wedge_with_tip(double deg, double radius) {
+  const double wedge = deg * std::numbers::pi / 180;
   TriangleMesh sheet;
   sheet.vertices.push_back({0, 0, 0});
   for (int i = 1; i <= kRings; ++i)
     for (int j = 0; j <= kAcross; ++j) {
-      const double r = static_cast<double>(i) / kRings, a = wedge * j / kAcross;
+      const double r = radius * i / kRings, a = wedge * j / kAcross;
       sheet.vertices.push_back({r * std::cos(a), r * std::sin(a), 0});
     }
-  const auto at = [](int i, int j) { return static_cast<Index>(1 + (i - 1) * (kAcross + 1) + j); };
   for (int j = 0; j < kAcross; ++j) sheet.triangles.push_back({0, at(1, j), at(1, j + 1)});
   for (int i = 1; i < kRings; ++i)
     for (int j = 0; j < kAcross; ++j)
       add_quad(sheet, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  return sheet;
+}
+
+// The sizes on the ray y = 0, away from the tip's own edges and the arc.
+std::vector<double> on_the_ray(const std::vector<double>& sizes) {
+  std::vector<double> out;
+  for (int i = 14; i <= 85; ++i) out.push_back(sizes[at(i, 0)]);
+  return out;
+}
+
+bool all_equal(const std::vector<double>& sizes, double size) {
+  return std::all_of(sizes.begin(), sizes.end(), [&](double s) { return s == size; });
+}
+
+TEST(FeatureGaps, ANarrowWedgeWithLongSidesNarrowsTowardsItsTipForEvenSizesToo) {
+  // 20°, sides 10 sizes long: the output traces it, and even sizes would leave a sliver beside
+  // the triangle at its tip (WedgeGaps::traced_narrow).
+  const TriangleMesh sheet = wedge_with_tip(20, 1);
   const Features features = outline(sheet);
   ASSERT_EQ(narrow_feature_angles(sheet, features, 30).size(), 1u);
   const std::vector<double> even(sheet.vertices.size(), 0.1);
-  const std::vector<double> narrowed = capped_by_feature_gaps(sheet, features, even);
-  const std::vector<double> left = capped_by_feature_gaps(sheet, features, even, false);
-  int checked = 0;
-  for (int i = 14; i <= 85; ++i) {  // the ray y = 0, away from the tip's own edges and the arc
-    const Index v = at(i, 0);
-    const double r = norm(sheet.vertices[v]);
-    EXPECT_NEAR(narrowed[v], std::min(0.1, r * std::sin(wedge)), 1e-9) << "at radius " << r;
-    EXPECT_EQ(left[v], 0.1) << "at radius " << r;
-    ++checked;
+  const std::vector<double> all = capped_by_feature_gaps(sheet, features, even);
+  const std::vector<double> traced =
+      capped_by_feature_gaps(sheet, features, even, WedgeGaps::traced_narrow);
+  EXPECT_EQ(all, traced);
+  const double wedge = 20 * std::numbers::pi / 180;
+  for (int i = 14; i <= 85; ++i) {
+    const double r = static_cast<double>(i) / kRings;
+    EXPECT_NEAR(traced[at(i, 0)], std::min(0.1, r * std::sin(wedge)), 1e-9) << "at radius " << r;
   }
-  EXPECT_GT(checked, 70);
+}
+
+TEST(FeatureGaps, EvenSizesLeaveTheWedgesAnOutputDoesNotTraceAsNarrow) {
+  const auto narrows = [](const TriangleMesh& sheet, const Features& features, double size,
+                          WedgeGaps wedges) {
+    const std::vector<double> sizes = capped_by_feature_gaps(
+        sheet, features, std::vector<double>(sheet.vertices.size(), size), wedges);
+    return !all_equal(on_the_ray(sizes), size);
+  };
+  // Sides 3.3 sizes long, under the 4 asked for.
+  const TriangleMesh short_sides = wedge_with_tip(20, 1);
+  EXPECT_TRUE(narrows(short_sides, outline(short_sides), 0.3, WedgeGaps::all));
+  EXPECT_FALSE(narrows(short_sides, outline(short_sides), 0.3, WedgeGaps::traced_narrow));
+  // 40°, sides 8 sizes long: not a narrow input angle; even sizes shape it well.
+  const TriangleMesh wider = wedge_with_tip(40, 4);
+  EXPECT_TRUE(narrows(wider, outline(wider), 0.5, WedgeGaps::all));
+  EXPECT_FALSE(narrows(wider, outline(wider), 0.5, WedgeGaps::traced_narrow));
+  // 20°, sides 10 sizes long, but one curve folds back through the tip, which is no corner: no
+  // output keeps it as a vertex.
+  const TriangleMesh folded = wedge_with_tip(20, 1);
+  Features fold = outline(folded);
+  std::vector<std::size_t> at_tip;  // the two curves with an end at the tip
+  for (std::size_t c = 0; c < fold.curves.size(); ++c)
+    if (fold.curves[c].vertices.front() == 0 || fold.curves[c].vertices.back() == 0)
+      at_tip.push_back(c);
+  ASSERT_EQ(at_tip.size(), 2u);
+  std::vector<Index>& in = fold.curves[at_tip[0]].vertices;
+  std::vector<Index> out = fold.curves[at_tip[1]].vertices;
+  if (in.back() != 0) std::reverse(in.begin(), in.end());
+  if (out.front() != 0) std::reverse(out.begin(), out.end());
+  in.insert(in.end(), out.begin() + 1, out.end());
+  fold.curves.erase(fold.curves.begin() + static_cast<std::ptrdiff_t>(at_tip[1]));
+  fold.corners.erase(std::find(fold.corners.begin(), fold.corners.end(), Index{0}));
+  EXPECT_TRUE(narrows(folded, fold, 0.1, WedgeGaps::all));
+  EXPECT_FALSE(narrows(folded, fold, 0.1, WedgeGaps::traced_narrow));
 }
 
 // Curves along polylines that join end to start (a corner where one ends and the next starts).

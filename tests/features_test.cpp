@@ -706,6 +706,26 @@ TEST(RemeshFeaturesSharedData, FandiskAt3kTracesEveryCrease) {
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
 }
 
+TEST(RemeshFeaturesSharedData, FandiskAt10kMeetsTheQualityBarAwayFromItsTip) {
+  if (!std::filesystem::exists(shared_data() / "fandisk.off"))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  const TriangleMesh in = shared_mesh("fandisk.off");
+  // Its 19.4° tip ends a narrow face between two creases: with even sizes up to the tip, the
+  // triangle beside the tip's own was a sliver (θmin 22.9° away from the tip, Qmin 0.558); the
+  // sizes now grade down into that wedge (WedgeGaps::traced_narrow).
+  RemeshSettings s;
+  s.vertices = 10000;
+  const RemeshResult r = remesh(in, s);
+  const std::vector<NarrowAngle> narrow = narrow_feature_angles(in, r.features, kNarrowAngleDeg);
+  ASSERT_EQ(narrow.size(), 1u);
+  const NarrowAngleQuality q = measure_away_from(r.mesh, measure_quality(r.mesh), narrow);
+  EXPECT_GE(q.angle_min_away_deg, 30.0);
+  EXPECT_GE(q.q_min_away, 0.6);
+  EXPECT_GE(q.ratio_at_min, 0.9);
+  EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
+}
+
 TEST(RemeshFeaturesSharedData, JointAt3kKeepsCornersAndCreases) {
   if (!std::filesystem::exists(shared_data() / "joint.off"))
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();

@@ -35,20 +35,34 @@ struct LfsSettings {
 // no triangle. Throws InvalidArgument for a mesh without area or a negative gradation.
 std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettings& settings = {});
 
+// Which wedges between feature curves (sectors of the surface under 60° at a vertex) narrow the
+// sizes near their tips in capped_by_feature_gaps.
+enum class WedgeGaps {
+  all,  // every one: the local feature size (issue 20 item 1)
+  // Only narrow ones (under 30°, issue 18 item 6's narrow input angles) whose two sides each run
+  // along their curves for at least 4 times the size at the tip. Near the tip of a traced narrow
+  // wedge, even sizes leave a triangle with the short chord across it next to one of the even
+  // length: a sliver (fandisk.off at 10k: θmin 22.9° away from its 19.4° tip; 39.2° graded).
+  // The other wedges are no gap: a wider one gets well shaped even triangles, and a side shorter
+  // than a couple of edges is not traced (lion.off's 8° tip between a long crease and one an edge
+  // long: sizes graded down to it only crowd small triangles there).
+  traced_narrow,
+};
+
 // `sizes` (per vertex of `mesh`), each curve vertex's lowered to the narrowest gap across which
 // another part of the feature curves faces it (issue 20 item 1): the distance to the nearest
 // point of them whose chord makes at least 60° with both curves there, where the gap goes on (a
 // gap further along the curve, it faces them within twice the gap). A strip between two creases
 // or boundaries gets its width, a closed curve its own width, the sides of a wedge under 60°
-// their distance; two curves meeting at a wider angle never narrow each other, nor do curves
+// their distance (as `wedges` says; the others are no gap near their tips, about as far from it
+// as each other); two curves meeting at a wider angle never narrow each other, nor do curves
 // that pass each other at one spot only. Only gaps under a vertex's size are looked for: the
-// size bounds the search. With `wedges` false, the sides of a wedge under 60° are no gap near its
-// tip (about as far from it as each other): its narrow angle stays in any output, and sizes
-// graded down to its tip only crowd small triangles around it. Each boundary loop shorter than
-// 2π times a vertex's size also caps that vertex at the loop's length over 2π, about six edges
-// around a small hole (no two sides of a triangular one face each other).
+// size bounds the search. Each boundary loop shorter than 2π times a vertex's size also caps
+// that vertex at the loop's length over 2π, about six edges around a small hole (no two sides
+// of a triangular one face each other).
 std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Features& features,
-                                           std::vector<double> sizes, bool wedges = true);
+                                           std::vector<double> sizes,
+                                           WedgeGaps wedges = WedgeGaps::all);
 
 // Target edge lengths for remeshing (RemeshSettings::sizing): one of three sources, then one
 // scale factor for the output size, then the grading (adaptive only), then the clamps. The

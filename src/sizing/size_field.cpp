@@ -117,9 +117,8 @@ void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double
   const double reach = s.adaptive > 0 ? kGapReach : kEvenGapReach;
   std::vector<double> limit(raw.h.size());
   for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = reach * raw.h[v] * k;
-  // An even sizing leaves wedges alone: grading down to a narrow angle gains no angle there.
-  const std::vector<double> capped =
-      capped_by_feature_gaps(mesh, *features, limit, /*wedges=*/s.adaptive > 0);
+  const std::vector<double> capped = capped_by_feature_gaps(
+      mesh, *features, limit, s.adaptive > 0 ? WedgeGaps::all : WedgeGaps::traced_narrow);
   raw.gap.assign(limit.size(), std::numeric_limits<double>::infinity());
   for (std::size_t v = 0; v < limit.size(); ++v)
     if (capped[v] < limit[v]) raw.gap[v] = capped[v];
