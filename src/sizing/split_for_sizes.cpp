@@ -10,8 +10,10 @@ namespace cvtmesh {
 
 namespace {
 
-// A safety net, never met in practice: the splits stop after this many added vertices per given
-// triangle (graded sizes converge towards the small end within a few halvings of each edge).
+// A safety net: the splits stop after this many added vertices per given triangle (graded sizes
+// converge towards the small end within a few halvings of each edge). No corpus mesh meets it; a
+// needle whose apex has a tiny size did while midpoints were sized from their edge's ends alone
+// (SplitForSizes.ANeedleWithATinySizeAtItsApexIsSplitFewTimes).
 constexpr std::size_t kMostPerTriangle = 8;
 // Bounds on the work for one triangle: the halvings before its own longest edge is halved, and
 // the steps along a longest-edge path (an edge reached at the last step is halved as if it ended
