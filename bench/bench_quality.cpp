@@ -1,7 +1,9 @@
 // Hot paths of the quality report: topology analysis, per-triangle metrics, Hausdorff distance
-// and mesh reading, on generated meshes (icosphere level 6 = 81,920 triangles, level 7 = 327,680,
-// about igea's size). Compare a figure against `BM_SurfaceArea` of the same size, the cheapest
-// possible pass over the triangles, run in the same process.
+// and mesh reading, and the walk of a mesh's edges that feature detection, components, topology
+// control and the finishing steps share (edge_uses), on generated meshes (icosphere level 6 =
+// 81,920 triangles, level 7 = 327,680, about igea's size). Compare a figure against
+// `BM_SurfaceArea` of the same size, the cheapest possible pass over the triangles, run in the same
+// process.
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -10,6 +12,7 @@
 #include "cvtmesh/io.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/topology.hpp"
+#include "features/edge_uses.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
@@ -37,6 +40,13 @@ void BM_AnalyzeTopology(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
 }
 BENCHMARK(BM_AnalyzeTopology)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+void BM_EdgeUses(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(edge_uses(m));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_EdgeUses)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 
 void BM_MeasureQuality(benchmark::State& state) {
   const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));

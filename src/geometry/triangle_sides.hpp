@@ -2,21 +2,23 @@
 // neighbours in the list: the connectivity a soup read from a file does not store.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
 
-// One triangle side: the edge (lo, hi) with lo < hi, the triangle, and whether the triangle
-// walks it from lo to hi.
+// One triangle side: the edge (lo, hi) with lo < hi, the triangle, whether the triangle walks it
+// from lo to hi, and which side it is (from the triangle's corner `side` to the next).
 struct TriangleSide {
   Index lo, hi;
   std::size_t triangle;
   bool forward;
+  std::uint8_t side;
 };
 
-// Every triangle's three sides, sorted by (lo, hi, triangle).
+// Every triangle's three sides, sorted by (lo, hi, triangle, side).
 std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh);
 
 }  // namespace cvtmesh
