@@ -39,13 +39,14 @@ std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettin
 // sizes near their tips in capped_by_feature_gaps.
 enum class WedgeGaps {
   all,  // every one: the local feature size (issue 20 item 1)
-  // Only narrow ones (under 30°, issue 18 item 6's narrow input angles) whose two sides each run
-  // along their curves for at least 4 times the size at the tip. Near the tip of a traced narrow
-  // wedge, even sizes leave a triangle with the short chord across it next to one of the even
-  // length: a sliver (fandisk.off at 10k: θmin 22.9° away from its 19.4° tip; 39.2° graded).
-  // The other wedges are no gap: a wider one gets well shaped even triangles, and a side shorter
-  // than a couple of edges is not traced (lion.off's 8° tip between a long crease and one an edge
-  // long: sizes graded down to it only crowd small triangles there).
+  // Only narrow ones (under 30°, issue 18 item 6's narrow input angles) whose two sides are
+  // curves that end at the tip (a corner) and run for at least 4 times the size there. Near the
+  // tip of a traced narrow wedge, even sizes leave a triangle with the short chord across it next
+  // to one of the even length: a sliver (fandisk.off at 10k: θmin 22.9° away from its 19.4° tip;
+  // 39.2° graded). The other wedges are no gap: a wider one gets well shaped even triangles, and
+  // a side shorter than a couple of edges, or a curve folding back where no corner is, is not
+  // traced (lion.off's 8° tip between a long crease and one an edge long: sizes graded down to it
+  // only crowd small triangles there).
   traced_narrow,
 };
 
