@@ -726,6 +726,22 @@ TEST(RemeshFeaturesSharedData, FandiskAt10kMeetsTheQualityBarAwayFromItsTip) {
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
 }
 
+TEST(RemeshFeaturesSharedData, ObtuseBoundaryCornersAreSplitWhereThatShapesBetter) {
+  if (!std::filesystem::exists(shared_data() / "corpus" / "blobby_3cc.off"))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  const TriangleMesh in = shared_mesh("corpus/blobby_3cc.off");
+  // At 1k its worst triangle was the only one at a boundary corner of 114° (Q 0.513).
+  RemeshSettings s;
+  s.vertices = 1000;
+  const RemeshResult r = remesh(in, s);
+  EXPECT_GT(r.obtuse_corners_split, 0u);
+  const QualityReport q = measure_quality(r.mesh);
+  EXPECT_GE(q.q_min, 0.6);
+  EXPECT_GE(q.angle_min_deg, 30.0);
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
+  EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
+}
+
 TEST(RemeshFeaturesSharedData, JointAt3kKeepsCornersAndCreases) {
   if (!std::filesystem::exists(shared_data() / "joint.off"))
     GTEST_SKIP() << "shared test meshes not found at " << shared_data();

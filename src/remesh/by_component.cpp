@@ -307,6 +307,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.vertices_closing_holes += part.vertices_closing_holes;
   all.flat_ears_removed += part.flat_ears_removed;
   all.valence_three_removed += part.valence_three_removed;
+  all.obtuse_corners_split += part.obtuse_corners_split;
   all.time_limit_reached |= part.time_limit_reached;
 }
 

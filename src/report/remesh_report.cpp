@@ -48,6 +48,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
   j["valence_three_removed"] = r.valence_three_removed;
+  j["obtuse_corners_split"] = r.obtuse_corners_split;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended + r.count_grown;
   j["count_grown"] = r.count_grown;
   j["vertices_added"] = r.vertices_added;
@@ -124,6 +125,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         "  boundary  {} flat or folded ears removed (a boundary vertex whose one triangle "
         "was flat, or folded back over its neighbour)\n",
         r.flat_ears_removed);
+  if (r.obtuse_corners_split > 0)
+    text += fmt::format(
+        "  boundary  {} obtuse corners split (a boundary vertex whose one triangle there held "
+        "over 100°: the edge across from it halved)\n",
+        r.obtuse_corners_split);
   if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
     text += fmt::format(
         "  topology  {} rounds of control: {} seeds added in split or non-disc cells, {} at "

@@ -1,0 +1,61 @@
+#include "remesh/split_obtuse_corners.hpp"
+
+#include <algorithm>
+
+#include "features/edge_uses.hpp"
+#include "geometry/angle.hpp"
+#include "geometry/surface_projector.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// An angle above this at a boundary corner is split: the CVT's own triangles stay well under it
+// (Q 0.6 allows about 105° between two 37.5° angles).
+constexpr double kObtuseDeg = 100;
+
+}  // namespace
+
+std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
+                                 const SurfaceProjector& surface) {
+  const std::vector<EdgeUse> uses = edge_uses(mesh);  // sorted by edge
+  // Per use, its edge's other use (the use itself for a boundary edge, none past two uses).
+  constexpr std::size_t kNone = ~std::size_t{0};
+  std::vector<std::size_t> other(uses.size(), kNone);
+  std::vector<bool> boundary(mesh.vertices.size(), false);
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+    if (j - i == 1) boundary[uses[i].edge[0]] = boundary[uses[i].edge[1]] = true;
+    if (j - i == 2) other[i] = i + 1, other[i + 1] = i;
+    i = j;
+  }
+  const std::size_t given = mesh.triangles.size();
+  std::vector<bool> split(given, false);
+  std::size_t added = 0;
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    if (other[i] == kNone || std::binary_search(features.begin(), features.end(), uses[i].edge))
+      continue;
+    const std::size_t t = uses[i].triangle(), u = uses[other[i]].triangle();
+    if (t == u || split[t] || split[u]) continue;
+    // t = (a, b, c) from its use of edge a -> b; u must run b -> a, with d across.
+    const Triangle ft = mesh.triangles[t], fu = mesh.triangles[u];
+    const std::size_t k = uses[i].corner % 3, l = uses[other[i]].corner % 3;
+    const Index a = ft[k], b = ft[(k + 1) % 3], c = ft[(k + 2) % 3];
+    const Index d = fu[(l + 2) % 3];
+    if (fu[l] != b || fu[(l + 1) % 3] != a || d == c || !boundary[c]) continue;
+    const Vec3& p = mesh.vertices[c];
+    if (!(angle_deg(mesh.vertices[a] - p, mesh.vertices[b] - p) > kObtuseDeg)) continue;
+    const auto m = static_cast<Index>(mesh.vertices.size());
+    mesh.vertices.push_back(surface.nearest(0.5 * (mesh.vertices[a] + mesh.vertices[b])).point);
+    mesh.triangles[t] = {c, a, m};
+    mesh.triangles[u] = {b, m, d};
+    mesh.triangles.push_back({c, m, b});
+    mesh.triangles.push_back({m, a, d});
+    split[t] = split[u] = true;
+    ++added;
+  }
+  return added;
+}
+
+}  // namespace cvtmesh

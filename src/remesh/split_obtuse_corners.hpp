@@ -1,0 +1,27 @@
+// A boundary vertex whose one triangle there holds an obtuse angle (a boundary corner of about
+// 110°, its two boundary edges fixing that angle) leaves the triangle obtuse whatever flips and
+// moves do: no flip takes a boundary edge, and a corner does not move. Halving the triangle's edge
+// across from the corner gives the corner two triangles of about half its angle each, which the
+// shape sweeps then even out with their neighbours (issue 18 item 6: blobby_3cc.off at 1k had its
+// worst triangle there, Q 0.513).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "cvtmesh/features.hpp"
+#include "cvtmesh/mesh.hpp"
+
+namespace cvtmesh {
+
+class SurfaceProjector;
+
+// For each triangle with an angle over 100° at a boundary vertex, halves the edge across from it
+// where that edge has two triangles, used in opposite directions, and is no feature edge
+// (`features`, sorted): its midpoint, moved to its nearest point on `surface`, is appended to the
+// vertices, and the two triangles become four, in their orientation. A triangle is split once at
+// most. Returns the vertices added.
+std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
+                                 const SurfaceProjector& surface);
+
+}  // namespace cvtmesh

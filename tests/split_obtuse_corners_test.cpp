@@ -1,0 +1,71 @@
+// Boundary corners whose one triangle holds an obtuse angle (remesh/split_obtuse_corners): the
+// edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
+// across a feature edge, at an inner vertex or under 100°.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cvtmesh/topology.hpp"
+#include "geometry/angle.hpp"
+#include "geometry/surface_projector.hpp"
+#include "remesh/split_obtuse_corners.hpp"
+
+namespace cvtmesh {
+namespace {
+
+// A flat strip of two triangles: the ear (c, a, b) with an angle of `deg` at the boundary corner
+// c, and (b, a, d) across its edge a-b.
+TriangleMesh ear(double deg) {
+  const double half = deg / 2 * std::numbers::pi / 180;
+  TriangleMesh m;
+  // a and b 2 apart, c above their middle at the height that makes the angle; d below.
+  m.vertices = {{-1, 0, 0}, {1, 0, 0}, {0, 1 / std::tan(half), 0}, {0, -1.7, 0}};
+  m.triangles = {{2, 0, 1}, {1, 0, 3}};
+  return m;
+}
+
+TEST(SplitObtuseCorners, AnObtuseCornerGetsTwoTrianglesOfHalfItsAngle) {
+  TriangleMesh m = ear(114);
+  const TopologyReport before = analyze_topology(m);
+  const SurfaceProjector plane(m);
+  EXPECT_EQ(split_obtuse_corners(m, {}, plane), 1u);
+  ASSERT_EQ(m.vertices.size(), 5u);
+  ASSERT_EQ(m.triangles.size(), 4u);
+  const TopologyReport after = analyze_topology(m);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_TRUE(after.consistently_oriented);
+  EXPECT_TRUE(same_topology(after, before));
+  EXPECT_EQ(after.boundary_loops, 1u);
+  for (const Triangle& t : m.triangles) {
+    const auto [a, b, c] = std::array{m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};
+    EXPECT_GT(cross(b - a, c - a).z, 0) << "orientation kept";
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == 2) {  // the corner: its angle halved
+        const Vec3& p = m.vertices[t[k]];
+        EXPECT_NEAR(angle_deg(m.vertices[t[(k + 1) % 3]] - p, m.vertices[t[(k + 2) % 3]] - p), 57,
+                    1e-9);
+      }
+  }
+  EXPECT_EQ(distance(m.vertices[4], Vec3{0, 0, 0}), 0);  // the midpoint, on the surface
+}
+
+TEST(SplitObtuseCorners, NothingAcrossAFeatureAtAnInnerVertexOrUnder100Degrees) {
+  TriangleMesh feature = ear(114);
+  EXPECT_EQ(split_obtuse_corners(feature, {Edge{0, 1}}, SurfaceProjector(feature)), 0u);
+  TriangleMesh acute = ear(95);
+  EXPECT_EQ(split_obtuse_corners(acute, {}, SurfaceProjector(acute)), 0u);
+  // The corner made an inner vertex: a fan closing round it.
+  TriangleMesh inner = ear(114);
+  inner.vertices.push_back({-1.5, 2, 0});
+  inner.vertices.push_back({1.5, 2, 0});
+  inner.triangles.push_back({2, 4, 0});
+  inner.triangles.push_back({2, 5, 4});
+  inner.triangles.push_back({2, 1, 5});
+  const std::size_t triangles = inner.triangles.size();
+  EXPECT_EQ(split_obtuse_corners(inner, {}, SurfaceProjector(inner)), 0u);
+  EXPECT_EQ(inner.triangles.size(), triangles);
+}
+
+}  // namespace
+}  // namespace cvtmesh
