@@ -1,6 +1,6 @@
 // Boundary corners whose one triangle holds an obtuse angle (remesh/split_obtuse_corners): the
 // edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
-// across a feature edge, at an inner vertex or under 100°.
+// across a feature edge, where the surface is far, at an inner vertex or under 100°.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,9 +50,13 @@ TEST(SplitObtuseCorners, AnObtuseCornerGetsTwoTrianglesOfHalfItsAngle) {
   EXPECT_EQ(distance(m.vertices[4], Vec3{0, 0, 0}), 0);  // the midpoint, on the surface
 }
 
-TEST(SplitObtuseCorners, NothingAcrossAFeatureAtAnInnerVertexOrUnder100Degrees) {
+TEST(SplitObtuseCorners, NothingAcrossAFeatureFarFromTheSurfaceAtAnInnerVertexOrUnder100Degrees) {
   TriangleMesh feature = ear(114);
   EXPECT_EQ(split_obtuse_corners(feature, {Edge{0, 1}}, SurfaceProjector(feature)), 0u);
+  TriangleMesh far = ear(114);  // the surface half an edge away: another sheet
+  TriangleMesh sheet = ear(114);
+  for (Vec3& p : sheet.vertices) p.z += 1;
+  EXPECT_EQ(split_obtuse_corners(far, {}, SurfaceProjector(sheet)), 0u);
   TriangleMesh acute = ear(95);
   EXPECT_EQ(split_obtuse_corners(acute, {}, SurfaceProjector(acute)), 0u);
   // The corner made an inner vertex: a fan closing round it.

@@ -13,6 +13,8 @@ namespace {
 // An angle above this at a boundary corner is split: the CVT's own triangles stay well under it
 // (Q 0.6 allows about 105° between two 37.5° angles).
 constexpr double kObtuseDeg = 100;
+// How far from the halved edge's middle its foot on the surface may lie, in edge lengths.
+constexpr double kMostOffset = 0.25;
 
 }  // namespace
 
@@ -46,8 +48,14 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
     if (fu[l] != b || fu[(l + 1) % 3] != a || d == c || !boundary[c]) continue;
     const Vec3& p = mesh.vertices[c];
     if (!(angle_deg(mesh.vertices[a] - p, mesh.vertices[b] - p) > kObtuseDeg)) continue;
+    // The midpoint's foot, unless the nearest surface lies farther than a quarter of the edge:
+    // another sheet of a thin part, which the new triangles would reach across.
+    const Vec3 middle = 0.5 * (mesh.vertices[a] + mesh.vertices[b]);
+    const Vec3 foot = surface.nearest(middle).point;
+    if (distance(foot, middle) > kMostOffset * distance(mesh.vertices[a], mesh.vertices[b]))
+      continue;
     const auto m = static_cast<Index>(mesh.vertices.size());
-    mesh.vertices.push_back(surface.nearest(0.5 * (mesh.vertices[a] + mesh.vertices[b])).point);
+    mesh.vertices.push_back(foot);
     mesh.triangles[t] = {c, a, m};
     mesh.triangles[u] = {b, m, d};
     mesh.triangles.push_back({c, m, b});

@@ -18,9 +18,9 @@ class SurfaceProjector;
 
 // For each triangle with an angle over 100° at a boundary vertex, halves the edge across from it
 // where that edge has two triangles, used in opposite directions, and is no feature edge
-// (`features`, sorted): its midpoint, moved to its nearest point on `surface`, is appended to the
-// vertices, and the two triangles become four, in their orientation. A triangle is split once at
-// most. Returns the vertices added.
+// (`features`, sorted) and its middle lies within a quarter of its length of `surface`: the
+// nearest point there is appended to the vertices, and the two triangles become four, in their
+// orientation. A triangle is split once at most. Returns the vertices added.
 std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
                                  const SurfaceProjector& surface);
 
