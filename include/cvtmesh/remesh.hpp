@@ -161,9 +161,9 @@ struct RemeshResult {
   // where that is better shaped (remesh/valence_three): how topology control's seeds next to
   // others often end. The topology stays; so may the count of vertices asked for not.
   std::size_t valence_three_removed = 0;
-  // Boundary corners whose one triangle held over 100°, given two by halving the edge across
-  // (remesh/split_obtuse_corners), where the shape sweeps then left the output better than
-  // without: a vertex added each.
+  // Triangles over 100° at a boundary vertex (a boundary corner, whose angle no flip or move
+  // changes) halved across from it (remesh/split_obtuse_corners), where the shape sweeps then
+  // left the output better than without: a vertex added each.
   std::size_t obtuse_corners_split = 0;
   // The output's last touch, after all the above: edges flipped between nearly coplanar
   // triangles and vertices moved along the surface, around badly shaped triangles, each only

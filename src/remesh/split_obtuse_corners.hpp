@@ -1,9 +1,9 @@
-// A boundary vertex whose one triangle there holds an obtuse angle (a boundary corner of about
-// 110°, its two boundary edges fixing that angle) leaves the triangle obtuse whatever flips and
-// moves do: no flip takes a boundary edge, and a corner does not move. Halving the triangle's edge
-// across from the corner gives the corner two triangles of about half its angle each, which the
-// shape sweeps then even out with their neighbours (issue 18 item 6: blobby_3cc.off at 1k had its
-// worst triangle there, Q 0.513).
+// A triangle with an obtuse angle at a boundary vertex (a boundary corner of about 110° in one
+// triangle, its two boundary edges fixing the angle, or such a corner's wider triangle of two)
+// stays obtuse whatever flips and moves do: no flip takes a boundary edge, and a corner does not
+// move. Halving the triangle's edge across from the corner gives the corner one triangle more,
+// which the shape sweeps then even out with their neighbours (issue 18 item 6: blobby_3cc.off at
+// 1k had its worst triangle there, Q 0.513).
 #pragma once
 
 #include <cstddef>
