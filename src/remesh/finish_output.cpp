@@ -80,8 +80,11 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
   return support;
 }
 
-// Whether `a` is shaped better than `b`: fewer triangles under θmin 30° or Q 0.6 (issue 18 item
-// 6's bar), or as many and a better worst one.
+// Issue 18 item 6's bar: θmin 30°, Q 0.6.
+constexpr double kBarAngleDeg = 30, kBarQuality = 0.6;
+
+// Whether `a` is shaped better than `b`: fewer triangles under the bar, or as many and a better
+// worst one.
 bool shaped_better(const TriangleMesh& a, const TriangleMesh& b) {
   const auto shapes = [](const TriangleMesh& m) {
     std::size_t under = 0;
@@ -89,7 +92,7 @@ bool shaped_better(const TriangleMesh& a, const TriangleMesh& b) {
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {
       const auto [p, q, r] = m.corners(t);
       const MinShape s = min_shape(p, q, r);
-      under += s.min_angle < 30 || s.quality < 0.6;
+      under += s.min_angle < kBarAngleDeg || s.quality < kBarQuality;
       worst.add(p, q, r);
     }
     return std::pair{under, worst.score()};
@@ -150,30 +153,30 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   // Last, as it moves vertices off the seeds' positions (which the matching above needs).
   std::vector<VertexSupport> supports =
       vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges);
-  ShapeImprovement shapes;
-  {
-    // Obtuse boundary corners split, then swept, against the output swept as it is: the split
-    // leaves the triangles across the halved edge obtuse until the sweeps move its midpoint, and
-    // where they cannot, the output without it is kept (ALSTOM_TEST4.off at 1k: Qmin 0.592 as
-    // it is, 0.540 split).
-    TriangleMesh split = result.mesh;
-    const std::size_t corners_split = split_obtuse_corners(split, result.feature_edges, projector);
-    std::vector<VertexSupport> split_supports = supports;
+  // Obtuse boundary corners split, then swept, against the output swept as it is: the split
+  // leaves the triangles across the halved edge obtuse until the sweeps move its midpoint, and
+  // where they cannot, the output without it is kept (ALSTOM_TEST4.off at 1k: Qmin 0.592 as it
+  // is, 0.540 split).
+  TriangleMesh split = result.mesh;
+  const std::size_t corners_split = split_obtuse_corners(split, result.feature_edges, projector);
+  std::vector<VertexSupport> split_supports;
+  std::vector<Edge> split_features;
+  ShapeImprovement split_shapes;
+  if (corners_split > 0) {
+    split_supports = supports;
     split_supports.resize(split.vertices.size());  // the midpoints are surface vertices
-    std::vector<Edge> split_features = result.feature_edges;
-    const ShapeImprovement split_shapes =
-        corners_split > 0 ? improve_shapes(split, projector, &curves, split_supports,
-                                           split_features, settings.shape_sweeps)
-                          : ShapeImprovement{};
-    shapes = improve_shapes(result.mesh, projector, &curves, supports, result.feature_edges,
-                            settings.shape_sweeps);
-    if (corners_split > 0 && shaped_better(split, result.mesh)) {
-      result.mesh = std::move(split);
-      result.feature_edges = std::move(split_features);
-      supports = std::move(split_supports);
-      shapes = split_shapes;
-      result.obtuse_corners_split = corners_split;
-    }
+    split_features = result.feature_edges;
+    split_shapes = improve_shapes(split, projector, &curves, split_supports, split_features,
+                                  settings.shape_sweeps);
+  }
+  ShapeImprovement shapes = improve_shapes(result.mesh, projector, &curves, supports,
+                                           result.feature_edges, settings.shape_sweeps);
+  if (corners_split > 0 && shaped_better(split, result.mesh)) {
+    result.mesh = std::move(split);
+    result.feature_edges = std::move(split_features);
+    supports = std::move(split_supports);
+    shapes = split_shapes;
+    result.obtuse_corners_split = corners_split;
   }
   result.shape_flips = shapes.flips;
   result.shape_moves = shapes.moves;
