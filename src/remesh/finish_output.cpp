@@ -93,7 +93,7 @@ bool shaped_better(const TriangleMesh& a, const TriangleMesh& b) {
       const auto [p, q, r] = m.corners(t);
       const MinShape s = min_shape(p, q, r);
       under += s.min_angle < kBarAngleDeg || s.quality < kBarQuality;
-      worst.add(p, q, r);
+      worst.add(WorstShape{s.quality, s.min_angle / 60});
     }
     return std::pair{under, worst.score()};
   };

@@ -32,8 +32,7 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
     if (j - i == 2) other[i] = i + 1, other[i + 1] = i;
     i = j;
   }
-  const std::size_t given = mesh.triangles.size();
-  std::vector<bool> split(given, false);
+  std::vector<bool> split(mesh.triangles.size(), false);
   std::size_t added = 0;
   for (std::size_t i = 0; i < uses.size(); ++i) {
     if (other[i] == kNone || std::binary_search(features.begin(), features.end(), uses[i].edge))
