@@ -421,8 +421,11 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
   // A component without area (degenerate triangles only) has nothing to remesh: the whole
   // gives it no seed either.
   std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
-  if (parts.empty() || (parts.size() == 1 && parts[0].pinches.empty()))
+  if (parts.empty() || (parts.size() == 1 && parts[0].pinches.empty())) {
+    // The one part is a copy of the whole: freed first (igea.ply at 10k: 13 MB of a 205 MB peak).
+    std::vector<Component>().swap(parts);
     return remesh_unit_topology_first(mesh, settings).result;
+  }
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<RemeshSettings> part_settings = component_settings(mesh, parts, settings);
