@@ -142,7 +142,7 @@ PhaseResult minimize_lbfgs(CvtObjective& objective, std::vector<Vec3>& seeds,
   parameters.m = 7;        // history pairs, as in Liu et al. 2009 (paper's [LWL*09])
   parameters.epsilon = 0;  // stopping is ours (relative gradient), in `progress`
   parameters.max_iterations = o.max_iterations;
-  parameters.max_linesearch = 20;
+  parameters.max_linesearch = kMaxLineSearch;
   lbfgsfloatval_t fx = 0;
   const int status = lbfgs(n, y, &fx, evaluate, progress, &state, &parameters);
   // liblbfgs leaves y at its best point; a line search that cannot progress (rounding) is a
