@@ -101,6 +101,53 @@ TEST(CellIslands, WellSpreadSeedsHaveNone) {
   EXPECT_TRUE(cell_islands(thin_plate(), dense).empty());
 }
 
+// Three pages of a book, n × n quads each, 120° apart around the spine x = y = 0, z in [-1, 1]:
+// one spine shared by all (an edge of three triangles at each step), or one copy per page.
+TriangleMesh book(int n, bool shared_spine) {
+  TriangleMesh m;
+  const auto spine = [&] {
+    const auto first = static_cast<Index>(m.vertices.size());
+    for (int j = 0; j <= n; ++j) m.vertices.push_back({0, 0, -1 + 2.0 * j / n});
+    return first;
+  };
+  const Index shared = spine();
+  for (int page = 0; page < 3; ++page) {
+    const Index axis = shared_spine ? shared : spine();
+    const double angle = 2 * M_PI * page / 3;
+    const auto first = static_cast<Index>(m.vertices.size());
+    for (int i = 1; i <= n; ++i)
+      for (int j = 0; j <= n; ++j)
+        m.vertices.push_back({std::cos(angle) * i / n, std::sin(angle) * i / n, -1 + 2.0 * j / n});
+    // Column i (0: the spine) and row j.
+    const auto at = [&](int i, int j) {
+      return static_cast<Index>(i == 0 ? axis + j : first + (i - 1) * (n + 1) + j);
+    };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        add_quad(m, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  }
+  return m;
+}
+
+TEST(CellIslands, ACellAroundAnEdgeOfThreeSheetsIsOnePieceAndThreeWhereTheSheetsOnlyTouch) {
+  // A seed near the middle of the spine, and seeds further out on every page: its cell spreads
+  // onto all three pages around the spine.
+  std::vector<Vec3> seeds{{0.01, 0.02, 0.03}};
+  for (int page = 0; page < 3; ++page)
+    for (const double z : {-0.8, 0.0, 0.8}) {
+      const double angle = 2 * M_PI * page / 3;
+      seeds.push_back({0.7 * std::cos(angle), 0.7 * std::sin(angle), z});
+    }
+  seeds.push_back({0, 0, -0.9});
+  seeds.push_back({0, 0, 0.9});
+  EXPECT_TRUE(cell_islands(book(12, true), seeds).empty());
+  // Spine vertices copied per page: the pages touch along it, but share no edge.
+  const std::vector<CellIsland> apart = cell_islands(book(12, false), seeds);
+  std::size_t of_first = 0;
+  for (const CellIsland& island : apart) of_first += island.seed == 0;
+  EXPECT_EQ(of_first, 2u);
+}
+
 TEST(DefectSeeds, SplitCellsGetSeedsNearTheDefectsAtTheirFarthestVertices) {
   // The plate's seeds as above, the middle one's cell split, and three close together on the
   // plate's side near a corner, whose triangle stands for a defect there.

@@ -1,9 +1,12 @@
 #include "voronoi/cell_pieces.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
+#include <stdexcept>
 #include <tuple>
 
+#include "geometry/triangle_sides.hpp"
 #include "geometry/union_find.hpp"
 
 namespace cvtmesh {
@@ -29,72 +32,92 @@ void sort_each_seed(std::vector<T>& items, const std::vector<std::size_t>& offse
 }  // namespace
 
 void CellPieceCollector::begin(std::size_t chunks) {
+  // Triangle ids take 29 bits of a polygon record (a 2^29-triangle input would need some 350 GB).
+  if (surface_.triangles.size() >= (std::size_t{1} << 29))
+    throw std::length_error("too many triangles for the cell pieces");
   polygon_chunks_.assign(chunks, {});
-  side_chunks_.assign(chunks, {});
+  // A cell meets an input edge in one segment (the cell is convex): its polygons on the
+  // triangles around the edge all have that segment as a side, and are one piece. Each triangle
+  // side's next around its edge (a ring: two sides for an inner edge, one for a boundary edge,
+  // more where the input branches) leads to them. Found here, before any polygon is kept: the
+  // sorted sides take 24 bytes per side for a moment (igea.ply at 10k: 19 MB at the peak, in
+  // end()).
+  const std::vector<TriangleSide> sides = sorted_sides(surface_);
+  around_.assign(sides.size(), 0);
+  for (std::size_t i = 0, j = 0; i < sides.size(); i = j) {
+    for (j = i + 1; j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi;)
+      ++j;
+    for (std::size_t k = i; k < j; ++k) {
+      const TriangleSide& next = sides[k + 1 < j ? k + 1 : i];
+      around_[3 * sides[k].triangle + sides[k].side] =
+          static_cast<std::uint32_t>(3 * next.triangle + next.side);
+    }
+  }
 }
 
 void CellPieceCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
   const auto& v = p.vertices;
-  Polygon out{p.seed, p.triangle, 0, {}};
+  Polygon out{p.seed, p.triangle, 0, 0, {}};
   for (std::size_t k = 1; k + 1 < v.size(); ++k) {
     const double a = triangle_area(v[0].point, v[k].point, v[k + 1].point);
     out.area += a;
     out.moment += (a / 3) * (v[0].point + v[k].point + v[k + 1].point);
   }
   if (!(out.area > 0)) out.moment = v[0].point;
-  const Triangle& t = surface_.triangles[p.triangle];
-  for (std::size_t k = 0; k < v.size(); ++k) {
-    const int e = input_edge_of_side(v[k], v[(k + 1) % v.size()]);
-    if (e < 0) continue;
-    const Index u = t[e], w = t[(e + 1) % 3];
-    side_chunks_[chunk].push_back({p.seed,
-                                   {std::min(u, w), std::max(u, w)},
-                                   static_cast<Index>(polygon_chunks_[chunk].size())});
-  }
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (const int e = input_edge_of_side(v[k], v[(k + 1) % v.size()]); e >= 0) out.sides |= 1u << e;
   polygon_chunks_[chunk].push_back(out);
 }
 
 void CellPieceCollector::end() {
-  // The chunks are joined into one array each, sized exactly, and each chunk is freed as soon as
-  // it is copied: at the peak, extraction held every polygon up to three times (issue 22: 264 MB
+  // The chunks are joined into one array, sized exactly, and each chunk is freed as soon as it
+  // is copied: at the peak, extraction held every polygon up to three times (issue 22: 264 MB
   // of a 490 MB run on a 500k-triangle torus).
-  // A cell meets an input edge in one segment (the cell is convex): its polygons on either side
-  // of the edge both have that segment as a side, and are one piece. The sides go straight into
-  // seed order (a counting sort, stable in traversal order), then each cell's few sides are
-  // sorted: sorting them all together was a third of this step.
   std::size_t polygon_count = 0;
   Index seeds = 0;
   for (const auto& chunk : polygon_chunks_) {
     polygon_count += chunk.size();
     for (const Polygon& polygon : chunk) seeds = std::max(seeds, polygon.seed + 1);
   }
-  std::vector<std::size_t> sides_of(static_cast<std::size_t>(seeds) + 1, 0);
-  for (const auto& chunk : side_chunks_)
-    for (const Side& side : chunk) ++sides_of[side.seed + 1];
-  const std::vector<std::size_t> side_offsets = seed_offsets(std::move(sides_of));
-  std::vector<std::size_t> next(side_offsets.begin(), side_offsets.end() - 1);
   std::vector<Polygon> polygons;
-  std::vector<Side> sides(side_offsets.back());
   polygons.reserve(polygon_count);
-  for (std::size_t c = 0; c < polygon_chunks_.size(); ++c) {
-    for (Side side : side_chunks_[c]) {
-      side.polygon += static_cast<Index>(polygons.size());
-      sides[next[side.seed]++] = side;
-    }
-    polygons.insert(polygons.end(), polygon_chunks_[c].begin(), polygon_chunks_[c].end());
-    std::vector<Polygon>().swap(polygon_chunks_[c]);
-    std::vector<Side>().swap(side_chunks_[c]);
+  for (auto& chunk : polygon_chunks_) {
+    polygons.insert(polygons.end(), chunk.begin(), chunk.end());
+    std::vector<Polygon>().swap(chunk);
   }
   polygon_chunks_.clear();
-  side_chunks_.clear();
-  sort_each_seed(sides, side_offsets, [](const Side& a, const Side& b) {
-    return std::tie(a.edge, a.polygon) < std::tie(b.edge, b.polygon);
-  });
+  // Per seed, its polygons as (triangle, polygon), by triangle: scattered into seed order, then
+  // each seed's few sorted. The pieces' lookup (piece_at) later reuses it, polygon → piece.
+  std::vector<std::size_t> polygons_of(static_cast<std::size_t>(seeds) + 1, 0);
+  for (const Polygon& polygon : polygons) ++polygons_of[polygon.seed + 1];
+  piece_offsets_ = seed_offsets(std::move(polygons_of));
+  std::vector<std::size_t> next(piece_offsets_.begin(), piece_offsets_.end() - 1);
+  piece_of_.resize(polygons.size());
+  for (std::size_t p = 0; p < polygons.size(); ++p)
+    piece_of_[next[polygons[p].seed]++] = {polygons[p].triangle, p};
+  std::vector<std::size_t>().swap(next);
+  sort_each_seed(piece_of_, piece_offsets_,
+                 [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
+  const auto polygon_at = [&](Index seed, Index triangle) -> std::size_t {
+    const auto begin = piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed]);
+    const auto end = piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed + 1]);
+    const auto at = std::lower_bound(begin, end, triangle,
+                                     [](const PieceOf& x, Index t) { return x.triangle < t; });
+    return at != end && at->triangle == triangle ? at->piece : polygons.size();
+  };
+  // Polygons of a cell around an input edge are one piece (see begin).
   UnionFind roots(polygons.size());
-  for (std::size_t i = 1; i < sides.size(); ++i)
-    if (sides[i].seed == sides[i - 1].seed && sides[i].edge == sides[i - 1].edge)
-      roots.unite(sides[i].polygon, sides[i - 1].polygon);
-  std::vector<Side>().swap(sides);
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    const Polygon& polygon = polygons[p];
+    for (std::uint32_t e = 0; e < 3; ++e) {
+      if (!(polygon.sides & (1u << e))) continue;
+      const std::uint32_t side = 3 * polygon.triangle + e;
+      for (std::uint32_t other = around_[side]; other != side; other = around_[other])
+        if (const std::size_t q = polygon_at(polygon.seed, other / 3); q < polygons.size())
+          roots.unite(p, q);
+    }
+  }
+  std::vector<std::uint32_t>().swap(around_);
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::size_t> slot(polygons.size(), kNone);  // root -> index in pieces_
   pieces_.clear();
@@ -127,17 +150,8 @@ void CellPieceCollector::end() {
     sorted.push_back(pieces_[order[i]]);
   }
   pieces_ = std::move(sorted);
-  // Per seed, its polygons' (triangle, piece), by triangle: scattered into seed order, then
-  // each seed's few sorted.
-  std::vector<std::size_t> polygons_of(static_cast<std::size_t>(seeds) + 1, 0);
-  for (const Polygon& polygon : polygons) ++polygons_of[polygon.seed + 1];
-  piece_offsets_ = seed_offsets(std::move(polygons_of));
-  next.assign(piece_offsets_.begin(), piece_offsets_.end() - 1);
-  piece_of_.resize(polygons.size());
-  for (std::size_t p = 0; p < polygons.size(); ++p)
-    piece_of_[next[polygons[p].seed]++] = {polygons[p].triangle, rank[slot[roots.find(p)]]};
-  sort_each_seed(piece_of_, piece_offsets_,
-                 [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
+  // Each seed's (triangle, polygon) becomes (triangle, piece).
+  for (PieceOf& of : piece_of_) of.piece = rank[slot[roots.find(of.piece)]];
 }
 
 std::size_t CellPieceCollector::piece_at(Index seed, Index triangle) const {

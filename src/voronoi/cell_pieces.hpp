@@ -5,7 +5,6 @@
 // ids, so sheets that only cross or touch in space stay apart.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -48,18 +47,17 @@ class CellPieceCollector : public PolygonSink {
 
  private:
   struct Polygon {
-    Index seed, triangle;
+    Index seed;
+    // The input edges (bit e: edge e of the triangle) that the polygon has a side on: 3 bits of
+    // the triangle's id, as polygons are most of the collector's memory.
+    std::uint32_t triangle : 29, sides : 3;
     double area;
     Vec3 moment;  // area × centroid; for a polygon without area, a vertex of it instead
   };
-  struct Side {
-    Index seed;
-    std::array<Index, 2> edge;  // input vertex ids, the smaller first
-    Index polygon;              // 32 bits: sides are most of the collector's memory
-  };
   const TriangleMesh& surface_;
+  // Per triangle side (3 t + e), the next side around its input edge; from begin() to end().
+  std::vector<std::uint32_t> around_;
   std::vector<std::vector<Polygon>> polygon_chunks_;
-  std::vector<std::vector<Side>> side_chunks_;
   std::vector<CellPiece> pieces_;
   // Each polygon's piece (index in pieces_), grouped by seed (from piece_offsets_[seed]), each
   // seed's by triangle: what piece_at searches.
