@@ -98,13 +98,6 @@ void CellPieceCollector::end() {
   std::vector<std::size_t>().swap(next);
   sort_each_seed(piece_of_, piece_offsets_,
                  [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
-  const auto polygon_at = [&](Index seed, Index triangle) -> std::size_t {
-    const auto begin = piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed]);
-    const auto end = piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed + 1]);
-    const auto at = std::lower_bound(begin, end, triangle,
-                                     [](const PieceOf& x, Index t) { return x.triangle < t; });
-    return at != end && at->triangle == triangle ? at->piece : polygons.size();
-  };
   // Polygons of a cell around an input edge are one piece (see begin).
   UnionFind roots(polygons.size());
   for (std::size_t p = 0; p < polygons.size(); ++p) {
@@ -113,8 +106,7 @@ void CellPieceCollector::end() {
       if (!(polygon.sides & (1u << e))) continue;
       const std::uint32_t side = 3 * polygon.triangle + e;
       for (std::uint32_t other = around_[side]; other != side; other = around_[other])
-        if (const std::size_t q = polygon_at(polygon.seed, other / 3); q < polygons.size())
-          roots.unite(p, q);
+        if (const PieceOf* q = entry(polygon.seed, other / 3)) roots.unite(p, q->piece);
     }
   }
   std::vector<std::uint32_t>().swap(around_);
@@ -154,12 +146,16 @@ void CellPieceCollector::end() {
   for (PieceOf& of : piece_of_) of.piece = rank[slot[roots.find(of.piece)]];
 }
 
+const CellPieceCollector::PieceOf* CellPieceCollector::entry(Index seed, Index triangle) const {
+  const PieceOf* begin = piece_of_.data() + piece_offsets_[seed];
+  const PieceOf* end = piece_of_.data() + piece_offsets_[seed + 1];
+  const PieceOf* at = std::lower_bound(begin, end, triangle,
+                                       [](const PieceOf& x, Index t) { return x.triangle < t; });
+  return at != end && at->triangle == triangle ? at : nullptr;
+}
+
 std::size_t CellPieceCollector::piece_at(Index seed, Index triangle) const {
-  const auto begin = piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed]);
-  const auto end = piece_of_.begin() + static_cast<std::ptrdiff_t>(piece_offsets_[seed + 1]);
-  return std::lower_bound(begin, end, triangle,
-                          [](const PieceOf& x, Index t) { return x.triangle < t; })
-      ->piece;
+  return entry(seed, triangle)->piece;
 }
 
 }  // namespace cvtmesh

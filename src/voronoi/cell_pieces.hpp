@@ -59,14 +59,16 @@ class CellPieceCollector : public PolygonSink {
   std::vector<std::uint32_t> around_;
   std::vector<std::vector<Polygon>> polygon_chunks_;
   std::vector<CellPiece> pieces_;
-  // Each polygon's piece (index in pieces_), grouped by seed (from piece_offsets_[seed]), each
-  // seed's by triangle: what piece_at searches.
+  // Each polygon's piece (index in pieces_; while end() joins them, its polygon), grouped by seed
+  // (from piece_offsets_[seed]), each seed's by triangle: what piece_at searches.
   struct PieceOf {
     Index triangle;
     std::size_t piece;
   };
   std::vector<PieceOf> piece_of_;
   std::vector<std::size_t> piece_offsets_;
+  // The entry of `seed`'s polygon on `triangle` in piece_of_, or null where it has none.
+  const PieceOf* entry(Index seed, Index triangle) const;
 };
 
 }  // namespace cvtmesh
