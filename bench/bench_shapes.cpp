@@ -1,4 +1,4 @@
-// The output's last step (remesh/improve_shapes: flips, moves, balancing flips and short-edge
+// The output's last step (finish/improve_shapes: flips, moves, balancing flips and short-edge
 // collapses around badly shaped triangles), against projecting every vertex onto the surface
 // once, measured in the same process so the ratio survives a noisy machine: the step's main cost
 // is its projections.
@@ -8,7 +8,7 @@
 //     shapes_over_projections, flips, moves, collapses (J = 3 has some), and Qmin and θmin before
 //     and after.
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
-//     rounds (remesh/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
+//     rounds (finish/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
 //   BM_ProjectMoved/M/C: 20k points on a torus of 40k triangles (C = 0) or 384 (C = 1, each
 //     triangle some 50 points wide), each moved at random by up to M% of the points' spacing,
@@ -31,9 +31,9 @@
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "finish/fit_surface.hpp"
+#include "finish/improve_shapes.hpp"
 #include "geometry/surface_projector.hpp"
-#include "remesh/fit_surface.hpp"
-#include "remesh/improve_shapes.hpp"
 #include "support/shapes.hpp"
 
 namespace {

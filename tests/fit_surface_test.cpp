@@ -1,4 +1,4 @@
-// Fitting the output to the input (remesh/fit_surface): chords of a curved surface move so that
+// Fitting the output to the input (finish/fit_surface): chords of a curved surface move so that
 // the surface lies between vertices and triangle middles, flat parts and pinned vertices stay,
 // and θmin and Qmin never fall.
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
+#include "finish/fit_surface.hpp"
 #include "geometry/surface_projector.hpp"
-#include "remesh/fit_surface.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {

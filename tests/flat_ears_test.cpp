@@ -7,7 +7,7 @@
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
-#include "remesh/flat_ears.hpp"
+#include "finish/flat_ears.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {

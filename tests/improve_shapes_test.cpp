@@ -11,8 +11,8 @@
 #include "cvtmesh/topology.hpp"
 #include "features/curve_projector.hpp"
 #include "features/edge_uses.hpp"
+#include "finish/improve_shapes.hpp"
 #include "geometry/surface_projector.hpp"
-#include "remesh/improve_shapes.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {

@@ -1,4 +1,4 @@
-// Boundary corners whose one triangle holds an obtuse angle (remesh/split_obtuse_corners): the
+// Boundary corners whose one triangle holds an obtuse angle (finish/split_obtuse_corners): the
 // edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
 // across a feature edge, where the surface is far, at an inner vertex or under 100°.
 #include <gtest/gtest.h>
@@ -7,9 +7,9 @@
 #include <numbers>
 
 #include "cvtmesh/topology.hpp"
+#include "finish/split_obtuse_corners.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
-#include "remesh/split_obtuse_corners.hpp"
 
 namespace cvtmesh {
 namespace {

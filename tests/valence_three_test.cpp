@@ -1,4 +1,4 @@
-// Vertices of three triangles (remesh/valence_three): removed for the triangle they split, with
+// Vertices of three triangles (finish/valence_three): removed for the triangle they split, with
 // the topology kept, only where that triangle is better, near, and new.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/topology.hpp"
+#include "finish/valence_three.hpp"
 #include "geometry/surface_projector.hpp"
-#include "remesh/valence_three.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {

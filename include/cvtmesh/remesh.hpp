@@ -151,18 +151,18 @@ struct RemeshResult {
   std::size_t triangles_removed = 0;
   std::size_t holes_closed = 0, triangles_closing_holes = 0;
   std::size_t vertices_closing_holes = 0;  // centres of holes closed by a fan
-  // Flat or folded ears removed at the boundary (remesh/flat_ears): triangles whose two edges at
+  // Flat or folded ears removed at the boundary (finish/flat_ears): triangles whose two edges at
   // one vertex, not a corner, were boundary edges meeting at 160° or more (120° at a vertex that
   // is no seed: a cell's far piece), or that folded back more than 120° over their neighbour
   // across the third edge. The boundary loop stays;
   // the vertex goes, and the links from it to its two neighbours count as missing.
   std::size_t flat_ears_removed = 0;
   // Surface vertices of three triangles removed for the triangle of their three neighbours,
-  // where that is better shaped (remesh/valence_three): how topology control's seeds next to
+  // where that is better shaped (finish/valence_three): how topology control's seeds next to
   // others often end. The topology stays; so may the count of vertices asked for not.
   std::size_t valence_three_removed = 0;
   // Triangles over 100° at a boundary vertex (a boundary corner, whose angle no flip or move
-  // changes) halved across from it (remesh/split_obtuse_corners), where the shape sweeps then
+  // changes) halved across from it (finish/split_obtuse_corners), where the shape sweeps then
   // left the output better than without: a vertex added each.
   std::size_t obtuse_corners_split = 0;
   // The output's last touch, after all the above: edges flipped between nearly coplanar
@@ -175,7 +175,7 @@ struct RemeshResult {
   // the topology stays); at most 1% of the vertices.
   std::size_t short_edges_collapsed = 0;
   // Surface vertices moved off the input along their normals, last of all, so that the input lies
-  // between them and their triangles' middles (remesh/fit_surface): the chords of a curved
+  // between them and their triangles' middles (finish/fit_surface): the chords of a curved
   // surface all fall inside convex parts otherwise. Never where θmin or Qmin would fall.
   std::size_t vertices_fitted = 0;
   TopologyReport input_topology;  // of the input, as analyze_topology gives it

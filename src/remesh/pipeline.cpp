@@ -1,5 +1,5 @@
 // The remeshing pipeline (paper §4): initial seeds, RCVT then CCVT, restricted Delaunay output,
-// topology control (remesh/mend_topology), the finishing steps (remesh/finish_output).
+// topology control (remesh/mend_topology), the finishing steps (finish/finish_output).
 #include "remesh/pipeline.hpp"
 
 #include <algorithm>
@@ -16,11 +16,12 @@
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
+#include "finish/finish_output.hpp"
 #include "geometry/even_spacing.hpp"
 #include "geometry/spread_samples.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
-#include "remesh/finish_output.hpp"
+#include "remesh/last_step.hpp"
 #include "remesh/mend_topology.hpp"
 #include "sizing/size_field.hpp"
 #include "system/elapsed.hpp"
@@ -272,6 +273,15 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.links_flipped = mends.links_flipped;
   result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
+  // The guaranteed last step (issue 18 item 1): whatever defect the rounds left goes, leaving a
+  // manifold. Only for a manifold input: a non-manifold input edge is a feature the output keeps.
+  const auto last_start = Clock::now();
+  const LastStep last = finish_manifold(result.mesh, result.input_topology, *projector);
+  result.seconds_topology += seconds_since(last_start);
+  result.triangles_removed = last.triangles_removed;
+  result.holes_closed = last.closed.holes;
+  result.triangles_closing_holes = last.closed.triangles;
+  result.vertices_closing_holes = last.closed.vertices;
   finish_output(result, seeds, optimized_seeds, constraints, features, *curves, *projector,
                 settings);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);

@@ -1,14 +1,14 @@
-#include "remesh/valence_three.hpp"
+#include "finish/valence_three.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
 
+#include "finish/surface_gap.hpp"
+#include "finish/worst_shape.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/triangles_around.hpp"
-#include "remesh/surface_gap.hpp"
-#include "remesh/worst_shape.hpp"
 
 namespace cvtmesh {
 

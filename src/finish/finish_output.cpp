@@ -1,7 +1,6 @@
-#include "remesh/finish_output.hpp"
+#include "finish/finish_output.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 #include <set>
 #include <span>
@@ -9,14 +8,12 @@
 
 #include "cvtmesh/repair.hpp"
 #include "features/edge_uses.hpp"
-#include "remesh/fit_surface.hpp"
-#include "remesh/flat_ears.hpp"
-#include "remesh/improve_shapes.hpp"
-#include "remesh/last_step.hpp"
-#include "remesh/split_obtuse_corners.hpp"
-#include "remesh/valence_three.hpp"
-#include "remesh/worst_shape.hpp"
-#include "system/elapsed.hpp"
+#include "finish/fit_surface.hpp"
+#include "finish/flat_ears.hpp"
+#include "finish/improve_shapes.hpp"
+#include "finish/split_obtuse_corners.hpp"
+#include "finish/valence_three.hpp"
+#include "finish/worst_shape.hpp"
 
 namespace cvtmesh {
 
@@ -122,15 +119,6 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    std::size_t optimized_seeds, const SeedConstraints& constraints,
                    const Features& features, const CurveProjector& curves,
                    const SurfaceProjector& projector, const RemeshSettings& settings) {
-  // The guaranteed last step: whatever defect the rounds left goes, leaving a manifold. Only for
-  // a manifold input: a non-manifold input edge is a feature the output keeps (issue 18).
-  const auto start = std::chrono::steady_clock::now();
-  const LastStep last = finish_manifold(result.mesh, result.input_topology, projector);
-  result.seconds_topology += seconds_since(start);
-  result.triangles_removed = last.triangles_removed;
-  result.holes_closed = last.closed.holes;
-  result.triangles_closing_holes = last.closed.triangles;
-  result.vertices_closing_holes = last.closed.vertices;
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
   std::vector<bool> corners(result.mesh.vertices.size(), false), seedless(corners.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;

@@ -1,4 +1,4 @@
-#include "remesh/split_obtuse_corners.hpp"
+#include "finish/split_obtuse_corners.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "remesh/improve_shapes.hpp"
+#include "finish/improve_shapes.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -13,13 +13,13 @@
 
 #include "features/curve_projector.hpp"
 #include "features/edge_uses.hpp"
+#include "finish/surface_gap.hpp"
+#include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/triangles_around.hpp"
 #include "geometry/unit_vector.hpp"
 #include "quality/min_shape.hpp"
-#include "remesh/surface_gap.hpp"
-#include "remesh/worst_shape.hpp"
 
 namespace cvtmesh {
 

@@ -1,4 +1,4 @@
-#include "remesh/fit_surface.hpp"
+#include "finish/fit_surface.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "remesh/flat_ears.hpp"
+#include "finish/flat_ears.hpp"
 
 #include <algorithm>
 #include <cmath>
