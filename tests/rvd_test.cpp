@@ -229,6 +229,35 @@ TEST(Rvd, MatchesBruteForceReference) {
   EXPECT_GT(pieces.areas.size(), m.triangles.size());
 }
 
+// Graded seeds on a coarse input: the sparse seeds' cells reach past their stored nearest seeds
+// (crowded by the dense ones) and span several input triangles, so their radius searches are
+// asked again on each, with reaches that differ (Impl::for_candidates reuses a search's seeds
+// within its reach only). Every piece is the brute-force one.
+TEST(Rvd, GradedSeedsOnCoarseTrianglesMatchBruteForce) {
+  const TriangleMesh m = icosphere(0);  // 20 triangles
+  std::vector<Vec3> seeds = sample_surface(m, 40, 4);
+  for (const Vec3& p : sample_surface(m, 400, 5))
+    if (p.z > 0.5) seeds.push_back(p);  // dense near one pole
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  PieceAreas pieces;
+  const TraversalStats stats = rvd.traverse(pieces);
+  EXPECT_GT(stats.radius_searches, 0u);
+  const auto reference = brute_force(m, seeds);
+  const double scale = surface_area(m) / static_cast<double>(m.triangles.size());
+  std::size_t compared = 0;
+  for (const auto& [key, area] : reference) {
+    const auto it = pieces.areas.find(key);
+    const double got = it == pieces.areas.end() ? 0.0 : it->second;
+    EXPECT_NEAR(got, area, 1e-12 * scale) << "seed " << key.first << ", triangle " << key.second;
+    ++compared;
+  }
+  for (const auto& [key, area] : pieces.areas)
+    if (!reference.count(key)) {
+      EXPECT_LT(area, 1e-12 * scale) << "extra piece";
+    }
+  EXPECT_GT(compared, m.triangles.size());
+}
+
 TEST(RvdDegenerate, SeedsOnARegularGridAtMeshVertices) {
   const TriangleMesh m = cube(4);  // vertices on a grid; cube corners are cospherical
   const TraversalStats stats = expect_tiling(m, m.vertices);

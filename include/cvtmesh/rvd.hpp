@@ -54,7 +54,8 @@ struct TraversalStats {
   std::size_t predicates = 0;       // side-of-bisector decisions
   std::size_t exact_fallbacks = 0;  // decisions the floating-point filter left to exact arithmetic
   std::size_t perturbed_ties = 0;   // exact ties decided by the symbolic perturbation
-  std::size_t radius_searches = 0;  // cells whose stored nearest seeds did not reach far enough
+  std::size_t radius_searches = 0;  // kd-tree searches where a cell's stored nearest seeds did
+                                    // not reach far enough (one per cell and wider reach)
   std::size_t triangles_replayed = 0;  // triangles whose polygons came from a TraversalMemory
 };
 
