@@ -12,6 +12,10 @@
 //     order-independence figure (issue 19: at most 1.15).
 //   BM_RvdCoarseInput/N/T: a cube of 12 triangles, N random seeds, each triangle thousands of
 //     cells wide (issue 19: coarse inputs cost what their cells cost); as above.
+//   BM_RvdGradedSeeds/N: the same cube, N seeds of which three quarters crowd one corner (a
+//     size field graded beside coarse facets, as on CAD parts): the sparse cells reach past their
+//     stored nearest seeds and across several triangles, where radius searches are kept and
+//     reused (radius_searches counts those made); as above, on 1 thread.
 //   BM_RvdDegenerate: seeds on the vertices of a grid-like cube mesh, where ties abound;
 //     compares to random seeds on the same mesh (exact_fallback_pct, ties).
 //   BM_RvdNeighborCache/N: icosphere level 5, N seeds (random, then 5 Lloyd steps) moved by 2% of
@@ -165,6 +169,22 @@ void BM_RvdCoarseInput(benchmark::State& state) {
 }
 BENCHMARK(BM_RvdCoarseInput)
     ->ArgsProduct({{5'000, 50'000}, {1, 2}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+void BM_RvdGradedSeeds(benchmark::State& state) {
+  const TriangleMesh mesh = testing::cube(1);
+  const auto n = static_cast<std::size_t>(state.range(0));
+  std::vector<Vec3> seeds = sample_surface(mesh, n / 4, 1);
+  for (const Vec3& p : sample_surface(mesh, 4 * n, 2))
+    if (seeds.size() < n && p.x > 0.25 && p.y > 0.25 && p.z > 0.25) seeds.push_back(p);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+}
+BENCHMARK(BM_RvdGradedSeeds)
+    ->Arg(5'000)
+    ->Arg(50'000)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
