@@ -6,33 +6,46 @@
 
 namespace cvtmesh {
 
-std::vector<double> graded(const TriangleMesh& mesh, std::vector<double> size, double gradation) {
-  // Each vertex's neighbours, as a compressed adjacency list (each edge of a triangle both ways).
+EdgeGraph::EdgeGraph(const TriangleMesh& mesh) {
+  // A compressed adjacency list: each edge of a triangle both ways.
   const std::size_t n = mesh.vertices.size();
-  std::vector<std::size_t> first(n + 1, 0);
+  first_.assign(n + 1, 0);
   for (const Triangle& t : mesh.triangles)
-    for (const Index v : t) first[v + 1] += 2;
-  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  std::vector<Index> neighbour(first[n]);
-  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for (const Index v : t) first_[v + 1] += 2;
+  for (std::size_t v = 0; v < n; ++v) first_[v + 1] += first_[v];
+  neighbour_.resize(first_[n]);
+  length_.resize(first_[n]);
+  std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+  const auto add = [&](Index v, Index u) {
+    length_[next[v]] = distance(mesh.vertices[u], mesh.vertices[v]);
+    neighbour_[next[v]++] = u;
+  };
   for (const Triangle& t : mesh.triangles)
     for (int k = 0; k < 3; ++k) {
-      neighbour[next[t[k]]++] = t[(k + 1) % 3];
-      neighbour[next[t[k]]++] = t[(k + 2) % 3];
+      add(t[k], t[(k + 1) % 3]);
+      add(t[k], t[(k + 2) % 3]);
     }
+}
 
+std::vector<double> graded(const EdgeGraph& graph, std::vector<double> size, double gradation) {
+  const std::size_t n = graph.vertices();
   using Entry = std::pair<double, Index>;  // tentative size, vertex: smallest first
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  for (Index v = 0; v < n; ++v) queue.push({size[v], v});
+  // Heapified at once rather than pushed one by one: the entries are distinct, so the order
+  // they come out in (and the result) is the same.
+  std::vector<Entry> start;
+  start.reserve(n);
+  for (Index v = 0; v < n; ++v) start.push_back({size[v], v});
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue(std::greater<>{},
+                                                                       std::move(start));
   std::vector<bool> done(n, false);
   while (!queue.empty()) {
     const auto [s, v] = queue.top();
     queue.pop();
     if (done[v] || s > size[v]) continue;
     done[v] = true;
-    for (std::size_t i = first[v]; i < first[v + 1]; ++i) {
-      const Index u = neighbour[i];
-      const double through_v = s + distance(mesh.vertices[u], mesh.vertices[v]) / gradation;
+    for (std::size_t i = graph.first_[v]; i < graph.first_[v + 1]; ++i) {
+      const Index u = graph.neighbour_[i];
+      const double through_v = s + graph.length_[i] / gradation;
       if (through_v < size[u]) {
         size[u] = through_v;
         queue.push({through_v, u});
@@ -40,6 +53,10 @@ std::vector<double> graded(const TriangleMesh& mesh, std::vector<double> size, d
     }
   }
   return size;
+}
+
+std::vector<double> graded(const TriangleMesh& mesh, std::vector<double> size, double gradation) {
+  return graded(EdgeGraph(mesh), std::move(size), gradation);
 }
 
 }  // namespace cvtmesh
