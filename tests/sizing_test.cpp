@@ -8,12 +8,44 @@
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/sizing.hpp"
+#include "sizing/gradation.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
 namespace {
 
 using namespace cvtmesh::testing;
+
+// The graded field is the largest one under the sizes that changes by at most 1/G per unit
+// length along every edge: each vertex keeps its size or is tight against a neighbour.
+TEST(Gradation, GradedSizesAreTheLargestOnesWithinTheBound) {
+  const TriangleMesh m = icosphere(2);
+  std::vector<double> size(m.vertices.size());
+  for (std::size_t v = 0; v < size.size(); ++v)
+    size[v] = 0.05 + 0.5 * std::abs(std::sin(37.0 * static_cast<double>(v)));
+  constexpr double kG = 2;
+  const EdgeGraph graph(m);
+  const std::vector<double> g = graded(graph, size, kG);
+  EXPECT_EQ(g, graded(m, size, kG));
+  std::vector<bool> tight(m.vertices.size(), false);
+  for (std::size_t v = 0; v < g.size(); ++v) {
+    EXPECT_LE(g[v], size[v]);
+    tight[v] = g[v] == size[v];
+  }
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Index a = t[k], b = t[(k + 1) % 3];
+      const double step = distance(m.vertices[a], m.vertices[b]) / kG;
+      EXPECT_LE(g[a], g[b] + step * (1 + 1e-12));
+      EXPECT_LE(g[b], g[a] + step * (1 + 1e-12));
+      if (std::abs(g[a] - (g[b] + step)) <= 1e-12) tight[a] = true;
+      if (std::abs(g[b] - (g[a] + step)) <= 1e-12) tight[b] = true;
+    }
+  EXPECT_TRUE(std::all_of(tight.begin(), tight.end(), [](bool x) { return x; }));
+  std::size_t lowered = 0;
+  for (std::size_t v = 0; v < g.size(); ++v) lowered += g[v] < size[v];
+  EXPECT_GT(lowered, g.size() / 4);  // the bound binds: the test grades something
+}
 
 LfsSettings raw() {
   LfsSettings s;
