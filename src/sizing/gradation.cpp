@@ -30,11 +30,20 @@ EdgeGraph::EdgeGraph(const TriangleMesh& mesh) {
 std::vector<double> graded(const EdgeGraph& graph, std::vector<double> size, double gradation) {
   const std::size_t n = graph.vertices();
   using Entry = std::pair<double, Index>;  // tentative size, vertex: smallest first
-  // Heapified at once rather than pushed one by one: the entries are distinct, so the order
-  // they come out in (and the result) is the same.
+  // The search starts from the vertices that lower a neighbour; one that lowers none never
+  // will (lowering a neighbour only makes it harder to lower), nor does taking it out of the
+  // queue change anything, unless it is lowered itself, when it comes in then. On a field
+  // graded only around a few narrow places, most vertices are no start (ChineseDragon-10kv.off
+  // at 1k fits its field to the count with 236 gradings). The entries are distinct, so the
+  // order they come out in, and the result, do not depend on how the heap was built.
+  const auto lowers_a_neighbour = [&](Index v) {
+    for (std::size_t i = graph.first_[v]; i < graph.first_[v + 1]; ++i)
+      if (size[v] + graph.length_[i] / gradation < size[graph.neighbour_[i]]) return true;
+    return false;
+  };
   std::vector<Entry> start;
-  start.reserve(n);
-  for (Index v = 0; v < n; ++v) start.push_back({size[v], v});
+  for (Index v = 0; v < n; ++v)
+    if (lowers_a_neighbour(v)) start.push_back({size[v], v});
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue(std::greater<>{},
                                                                        std::move(start));
   std::vector<bool> done(n, false);
