@@ -1,8 +1,9 @@
 // The output's finishing steps, after topology control and its last step (paper §4.4;
 // remesh/mend_topology, remesh/last_step), in this order: flat ears at the boundary, the output
 // vertices that topology control added and the feature links traced (matched to the seeds by
-// position, so before anything moves them), the last flips, moves and collapses around badly shaped
-// triangles (improve_shapes), vertices of three triangles, and the fit to the input.
+// position, so before anything moves them), the last flips, moves and collapses around badly
+// shaped triangles (improve_shapes; obtuse boundary corners split first where that ends better),
+// vertices of three triangles, and the fit to the input.
 #pragma once
 
 #include <vector>
@@ -14,10 +15,10 @@ namespace cvtmesh {
 
 class SurfaceProjector;
 
-// `result.mesh`: the extraction topology control returned, after its last step (its first vertices
-// the seeds, by id);
-// `seeds`: all the seeds, those topology control added from `optimized_seeds` on. Fills
-// `result`'s counts of what each step did, its feature edges, and the vertices added.
+// `result.mesh`: the extraction topology control returned, after its last step (its first
+// vertices the seeds, by id); `seeds`: all the seeds, those topology control added from
+// `optimized_seeds` on. Fills `result`'s counts of what each step did, its feature edges, and the
+// vertices added.
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    std::size_t optimized_seeds, const SeedConstraints& constraints,
                    const Features& features, const CurveProjector& curves,

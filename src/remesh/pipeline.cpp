@@ -1,5 +1,6 @@
 // The remeshing pipeline (paper §4): initial seeds, RCVT then CCVT, restricted Delaunay output,
-// topology control (remesh/mend_topology), the finishing steps (finish/finish_output).
+// topology control (remesh/mend_topology) and its last step (remesh/last_step), the finishing
+// steps (finish/finish_output).
 #include "remesh/pipeline.hpp"
 
 #include <algorithm>
