@@ -72,10 +72,10 @@ struct Scratch {
   std::vector<std::size_t> stamp;
   predicates::PredicateCounters counters;
   std::size_t polygons = 0, cells_clipped = 0, replayed = 0;
-  // This traversal's radius searches (Impl::for_candidates), per seed: the seeds within
+  // The current chunk's radius searches (Impl::for_candidates), per seed: the seeds within
   // `reach2` of it. A cell that spans several input triangles asks again on each, mostly within
   // the same reach (couplingdown.off at 1k, graded sizes: its 330,000 searches were 10% of the
-  // remesh).
+  // remesh). Kept for a chunk only, so that they take little memory on large inputs.
   struct Searched {
     double reach2 = -1;
     std::vector<Index> found;
@@ -459,6 +459,7 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
   tbb::parallel_for(std::size_t{0}, (vertices.size() + kChunkSize - 1) / kChunkSize,
                     [&](std::size_t chunk) {
                       Scratch& s = scratch.local();
+                      s.searched.clear();
                       const std::size_t begin = chunk * kChunkSize;
                       const std::size_t end = std::min(vertices.size(), begin + kChunkSize);
                       Index last = kNoIndex;
@@ -470,6 +471,7 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
                     });
   tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
     Scratch& s = scratch.local();
+    s.searched.clear();  // a chunk's triangles are near one another, the searches they share too
     const std::size_t begin = chunk * chunk_size, end = std::min(triangles, begin + chunk_size);
     const bool kept = adoptable && std::none_of(stale.begin() + static_cast<std::ptrdiff_t>(begin),
                                                 stale.begin() + static_cast<std::ptrdiff_t>(end),
