@@ -102,13 +102,18 @@ void report(benchmark::State& state, const Pass& p) {
   state.counters["radius_searches"] = static_cast<double>(p.stats.radius_searches);
 }
 
-// RVD against Delaunay with state.range(0) random seeds on `mesh`, the RVD on state.range(1)
-// threads (CGAL's Delaunay is serial: the ratio is for one thread each).
-void random_seeds_pass(benchmark::State& state, const TriangleMesh& mesh) {
-  const auto seeds = sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1);
-  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
-                              static_cast<std::size_t>(state.range(1)));
+// RVD against Delaunay with `seeds` on `mesh`, the RVD on `threads` threads (CGAL's Delaunay is
+// serial: the ratio is for one thread each).
+void seeds_pass(benchmark::State& state, const TriangleMesh& mesh, const std::vector<Vec3>& seeds,
+                std::size_t threads) {
+  tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
   for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+}
+
+// As seeds_pass, with state.range(0) random seeds, on state.range(1) threads.
+void random_seeds_pass(benchmark::State& state, const TriangleMesh& mesh) {
+  seeds_pass(state, mesh, sample_surface(mesh, static_cast<std::size_t>(state.range(0)), 1),
+             static_cast<std::size_t>(state.range(1)));
 }
 
 void BM_RvdVsDelaunay(benchmark::State& state) {
@@ -179,8 +184,7 @@ void BM_RvdGradedSeeds(benchmark::State& state) {
   std::vector<Vec3> seeds = sample_surface(mesh, n / 4, 1);
   for (const Vec3& p : sample_surface(mesh, 4 * n, 2))
     if (seeds.size() < n && p.x > 0.25 && p.y > 0.25 && p.z > 0.25) seeds.push_back(p);
-  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
-  for (auto _ : state) report(state, rvd_pass(mesh, seeds));
+  seeds_pass(state, mesh, seeds, 1);
 }
 BENCHMARK(BM_RvdGradedSeeds)
     ->Arg(5'000)
