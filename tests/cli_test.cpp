@@ -132,6 +132,36 @@ TEST(Cli, QualityWithReferenceAddsHausdorffAndTopology) {
   EXPECT_NE(r.out.find("DIFFERS"), std::string::npos) << r.out;
 }
 
+// Each side of the distance on its own: a cap of the reference sphere lies on the sphere (nothing
+// to it), while the rest of the sphere lies far from the cap; the two-sided figures are the larger.
+TEST(Cli, QualityReportsEachSideOfTheHausdorffDistance) {
+  TempDir dir;
+  const TriangleMesh sphere = icosphere(3);
+  TriangleMesh cap = sphere;
+  std::erase_if(cap.triangles, [&](const Triangle& t) {
+    return sphere.vertices[t[0]].z + sphere.vertices[t[1]].z + sphere.vertices[t[2]].z < 0;
+  });
+  write_mesh(dir / "sphere.off", sphere);
+  write_mesh(dir / "cap.off", cap);
+  const CliRun r = run_cli(dir, "quality --json --samples 20000 " + quoted(dir / "cap.off") +
+                                    " --ref " + quoted(dir / "sphere.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& to = j["hausdorff_to_reference"];
+  const auto& from = j["hausdorff_from_reference"];
+  EXPECT_LT(to["max_pct"].get<double>(), 1e-9);
+  EXPECT_LT(to["mean_pct"].get<double>(), 1e-9);
+  // The lower half lies up to √2 radii from the cap: about 7% of the diagonal on average.
+  EXPECT_GT(from["mean_pct"].get<double>(), 3);
+  EXPECT_EQ(j["hausdorff_mean_pct"], from["mean_pct"]);
+  EXPECT_EQ(j["hausdorff_max_pct"], from["max_pct"]);
+  EXPECT_EQ(j["hausdorff_rms_pct"], from["rms_pct"]);
+  const CliRun text = run_cli(dir, "quality --samples 20000 " + quoted(dir / "cap.off") +
+                                       " --ref " + quoted(dir / "sphere.off"));
+  EXPECT_NE(text.out.find("mean to the reference 0.00000%, from it"), std::string::npos)
+      << text.out;
+}
+
 TEST(Cli, NonManifoldInputIsReportedNotFatal) {
   TempDir dir;
   write_file(dir / "fin.obj",

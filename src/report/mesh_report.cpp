@@ -36,6 +36,12 @@ void add_reference_json(nlohmann::ordered_json& j, const HausdorffReport* h,
   j["hausdorff_mean_pct"] = h ? nlohmann::ordered_json(h->mean_pct()) : nullptr;
   j["hausdorff_rms_pct"] = h ? nlohmann::ordered_json(h->rms_pct()) : nullptr;
   j["hausdorff_samples"] = h ? h->samples_per_surface : 0;
+  const auto one_sided = [&](const OneSidedDistance& d) {
+    return nlohmann::ordered_json{
+        {"max_pct", h->pct(d.max)}, {"mean_pct", h->pct(d.mean)}, {"rms_pct", h->pct(d.rms)}};
+  };
+  j["hausdorff_to_reference"] = h ? one_sided(h->a_to_b) : nullptr;
+  j["hausdorff_from_reference"] = h ? one_sided(h->b_to_a) : nullptr;
   j["same_topology"] = same;
   j["reference"] = {{"components", reference.components},
                     {"euler_characteristic", reference.euler_characteristic},
@@ -73,8 +79,10 @@ std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self
   std::string s =
       h ? fmt::format(
               "  hausdorff max {:.5f}%   mean {:.5f}%   rms {:.5f}% of the reference's bbox "
-              "diagonal ({} samples per surface)\n",
-              h->max_pct(), h->mean_pct(), h->rms_pct(), h->samples_per_surface)
+              "diagonal ({} samples per surface); mean to the reference {:.5f}%, from it "
+              "{:.5f}%\n",
+              h->max_pct(), h->mean_pct(), h->rms_pct(), h->samples_per_surface,
+              h->pct(h->a_to_b.mean), h->pct(h->b_to_a.mean))
         : std::string("  hausdorff not measured\n");
   if (same_topology(self, reference)) return s + "  topology  same as the reference\n";
   return s + fmt::format(
