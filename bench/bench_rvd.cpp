@@ -23,6 +23,10 @@
 //     between two steps of the optimization: an RVD pass with integrals whose nearest-seed lists
 //     come from a NeighborCache filled before the move (cached_s) against one that searches them
 //     (fresh_s); cached_over_fresh (issue 19 item 2).
+//   BM_NeighborListsWarm/N: the nearest-seed lists alone (12 a seed, one thread), on the seeds of
+//     BM_RvdNeighborCache moved by 20% of their spacing, as early steps of an optimization move
+//     them, past what the cache keeps: searched from scratch (cold_s) against searched within the
+//     bound that the lists before the move give each seed (warm_s); warm_over_cold.
 //   BM_MultiNerveExtraction/N: the output's extraction (restricted Delaunay triangulation with
 //     the cells' pieces, paper §4.4: what every polishing and topology round runs) on icosphere
 //     level 5 (20,480 faces) with N random seeds, against an RVD pass with integrals on the same
@@ -51,10 +55,12 @@
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "geometry/point_tree.hpp"
 #include "geometry/spread_samples.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
 #include "voronoi/multi_nerve.hpp"
+#include "voronoi/seed_neighbors.hpp"
 
 namespace {
 
@@ -241,25 +247,36 @@ BENCHMARK(BM_SpreadSamples)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-void BM_RvdNeighborCache(benchmark::State& state) {
-  const TriangleMesh mesh = testing::icosphere(5);
-  const auto n = static_cast<std::size_t>(state.range(0));
-  // Spread as in an optimization's later steps: random seeds, then a few Lloyd steps (each seed
-  // to its cell's centroid, back onto the unit sphere).
-  std::vector<Vec3> before = sample_surface(mesh, n, 1);
+// N seeds on the unit sphere spread as in an optimization's later steps: random seeds, then a
+// few Lloyd steps (each seed to its cell's centroid, back onto the sphere).
+std::vector<Vec3> lloyd_spread_seeds(const TriangleMesh& mesh, std::size_t n) {
+  std::vector<Vec3> seeds = sample_surface(mesh, n, 1);
   for (int step = 0; step < 5; ++step) {
-    const RestrictedVoronoiDiagram rvd(mesh, before);
+    const RestrictedVoronoiDiagram rvd(mesh, seeds);
     CellIntegrator integrator(rvd);
     rvd.traverse(integrator);
     for (std::size_t s = 0; s < n; ++s)
       if (integrator.result().mass[s] > 0)
-        before[s] = (1 / norm(integrator.result().centroid(static_cast<Index>(s)))) *
-                    integrator.result().centroid(static_cast<Index>(s));
+        seeds[s] = (1 / norm(integrator.result().centroid(static_cast<Index>(s)))) *
+                   integrator.result().centroid(static_cast<Index>(s));
   }
-  std::vector<Vec3> after = before;
-  const double spacing = std::sqrt(4 * 3.141592653589793 / static_cast<double>(n));
-  for (std::size_t s = 0; s < n; ++s)  // a fixed, spread-out move (no random numbers needed)
-    after[s] += 0.02 * spacing * Vec3{std::sin(3.0 * s), std::cos(5.0 * s), std::sin(7.0 * s)};
+  return seeds;
+}
+
+// `seeds` moved by `fraction` of their spacing on the unit sphere, in a fixed, spread-out pattern
+// (no random numbers needed).
+std::vector<Vec3> moved_seeds(std::vector<Vec3> seeds, double fraction) {
+  const double spacing = std::sqrt(4 * 3.141592653589793 / static_cast<double>(seeds.size()));
+  for (std::size_t s = 0; s < seeds.size(); ++s)
+    seeds[s] += fraction * spacing * Vec3{std::sin(3.0 * s), std::cos(5.0 * s), std::sin(7.0 * s)};
+  return seeds;
+}
+
+void BM_RvdNeighborCache(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<Vec3> before = lloyd_spread_seeds(mesh, n);
+  const std::vector<Vec3> after = moved_seeds(before, 0.02);
   const auto pass = [&](const RestrictedVoronoiDiagram& rvd, const Clock::time_point start) {
     CellIntegrator integrator(rvd);
     const TraversalStats stats = rvd.traverse(integrator);
@@ -288,6 +305,37 @@ BENCHMARK(BM_RvdNeighborCache)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+void BM_NeighborListsWarm(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::vector<Vec3> before = lloyd_spread_seeds(mesh, n);
+  const std::vector<Vec3> after = moved_seeds(before, 0.2);
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  constexpr std::size_t kLists = 12;  // as the RVD stores
+  const SeedNeighbors earlier = nearest_neighbors(before, PointTree(before), kLists);
+  const PointTree tree(after);
+  for (auto _ : state) {
+    auto start = Clock::now();
+    const SeedNeighbors cold = nearest_neighbors(after, tree, kLists);
+    const double cold_s = seconds(start);
+    start = Clock::now();
+    const SeedNeighbors warm = nearest_neighbors(after, tree, kLists, &earlier);
+    const double warm_s = seconds(start);
+    if (warm.ids != cold.ids || warm.complete2 != cold.complete2)
+      state.SkipWithError("the warm-started lists differ from the cold ones");
+    state.SetIterationTime(cold_s + warm_s);
+    state.counters["cold_s"] = cold_s;
+    state.counters["warm_s"] = warm_s;
+    state.counters["warm_over_cold"] = warm_s / cold_s;
+  }
+}
+BENCHMARK(BM_NeighborListsWarm)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
 
 void BM_MultiNerveExtraction(benchmark::State& state) {
   const TriangleMesh mesh = testing::icosphere(5);

@@ -46,15 +46,20 @@ Index PointTree::operator()(const Vec3& p) const {
   return static_cast<Index>(index);
 }
 
-void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const {
+void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out,
+                        double bound2) const {
   // Per thread, not per query: the RVD asks for every seed's neighbours in most evaluations.
   thread_local std::vector<std::size_t> indices;
   thread_local std::vector<double> d2;
   indices.resize(k);
   d2.resize(k);
   const double query[3] = {p.x, p.y, p.z};
-  const std::size_t found = tree_->index.knnSearch(query, k, indices.data(), d2.data());
-  out.assign(indices.begin(), indices.begin() + static_cast<std::ptrdiff_t>(found));
+  nanoflann::KNNResultSet<double, std::size_t> result(k);
+  result.init(indices.data(), d2.data());
+  // The result set's worst distance until it is full: nanoflann prunes every branch farther.
+  if (k > 0 && bound2 < d2[k - 1]) d2[k - 1] = bound2;
+  tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
+  out.assign(indices.begin(), indices.begin() + static_cast<std::ptrdiff_t>(result.size()));
 }
 
 void PointTree::within(const Vec3& p, double r2, std::vector<Index>& out) const {

@@ -2,6 +2,7 @@
 // the surface projector's triangle centroids.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -16,8 +17,11 @@ class PointTree {
   ~PointTree();
   // Thread-safe after construction; deterministic (the tree is built the same way every time).
   Index operator()(const Vec3& p) const;
-  // The k points nearest to p (all points if fewer), in no particular order.
-  void nearest(const Vec3& p, std::size_t k, std::vector<Index>& out) const;
+  // The k points nearest to p (all points if fewer), in no particular order. `bound2`, if given,
+  // must be a squared distance within which at least k points lie: the search skips what lies
+  // beyond it from its start instead of from its k-th find.
+  void nearest(const Vec3& p, std::size_t k, std::vector<Index>& out,
+               double bound2 = std::numeric_limits<double>::infinity()) const;
   // Every point within squared distance r2 of p, in no particular order.
   void within(const Vec3& p, double r2, std::vector<Index>& out) const;
 

@@ -356,12 +356,18 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
   const auto reaching = [&](const SeedNeighbors& lists) {
     return median_of(lists.complete2) >= kKeptReach * kKeptReach * state->fresh_median;
   };
+  // Lists that no longer reach far enough still bound how far a fresh search must look.
+  std::optional<SeedNeighbors> earlier;
   if (shrunk && reaching(shrunk->lists)) {
     SeedNeighbors moved = bound_by_movers(std::move(*shrunk), seeds, *nearest);
     if (reaching(moved)) {
       neighbors = std::make_shared<const SeedNeighbors>(std::move(moved));
       times.neighbors_reused = true;
+    } else {
+      earlier = std::move(moved);
     }
+  } else if (shrunk) {
+    earlier = std::move(shrunk->lists);
   }
   if (memory) {
     if (!*memory) *memory = std::make_unique<TraversalMemory::State>();
@@ -373,8 +379,8 @@ void RestrictedVoronoiDiagram::Impl::build(const TriangleMesh& on, std::vector<V
     m.lists = neighbors;
     m.lists_at = seeds;
   } else if (!times.neighbors_reused) {
-    neighbors =
-        std::make_shared<const SeedNeighbors>(nearest_neighbors(seeds, *nearest, kStoredNeighbors));
+    neighbors = std::make_shared<const SeedNeighbors>(
+        nearest_neighbors(seeds, *nearest, kStoredNeighbors, earlier ? &*earlier : nullptr));
     if (cache) {
       if (!state) state = (*cache = std::make_unique<NeighborCache::State>()).get();
       state->fresh_median = median_of(neighbors->complete2);

@@ -53,10 +53,11 @@ void sort_by_distance(const std::vector<Vec3>& seeds, Index s, std::span<Index> 
 namespace {
 
 // Seed s's k nearest other seeds into `list`, nearest first, and the squared radius within which
-// they are all the seeds there are. `near`: scratch.
+// they are all the seeds there are. `near`: scratch. `bound2`: as PointTree::nearest's.
 double search_list(const std::vector<Vec3>& seeds, const PointTree& tree, Index s, std::size_t k,
-                   std::vector<Index>& near, std::span<Index> list) {
-  tree.nearest(seeds[s], k + 1, near);  // s itself is among them: seeds are distinct
+                   std::vector<Index>& near, std::span<Index> list,
+                   double bound2 = std::numeric_limits<double>::infinity()) {
+  tree.nearest(seeds[s], k + 1, near, bound2);  // s itself is among them: seeds are distinct
   near.erase(std::remove(near.begin(), near.end(), s), near.end());
   near.resize(k);
   sort_by_distance(seeds, s, near);
@@ -66,10 +67,21 @@ double search_list(const std::vector<Vec3>& seeds, const PointTree& tree, Index 
   return kRoundedDown * dot(seeds[near[k - 1]] - seeds[s], seeds[near[k - 1]] - seeds[s]);
 }
 
+// Within this squared distance of seed s lie at least k other seeds: those of `list`, if it has
+// k (rounded up far past the distances' rounding); else infinity.
+double bound_from(const std::vector<Vec3>& seeds, Index s, std::span<const Index> list,
+                  std::size_t k) {
+  if (k == 0 || list.size() < k) return std::numeric_limits<double>::infinity();
+  double farthest = 0;
+  for (const Index j : list.first(k))
+    farthest = std::max(farthest, dot(seeds[j] - seeds[s], seeds[j] - seeds[s]));
+  return kRoundedUp * farthest;
+}
+
 }  // namespace
 
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
-                                std::size_t k) {
+                                std::size_t k, const SeedNeighbors* earlier) {
   k = std::min(k, seeds.size() - 1);
   SeedNeighbors n;
   n.offsets.resize(seeds.size() + 1);
@@ -81,7 +93,9 @@ SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree&
       tbb::blocked_range<Index>(0, static_cast<Index>(seeds.size()), 256), [&](const auto& r) {
         for (Index s = r.begin(); s < r.end(); ++s)
           n.complete2[s] =
-              search_list(seeds, tree, s, k, found.local(), std::span(n.ids).subspan(s * k, k));
+              search_list(seeds, tree, s, k, found.local(), std::span(n.ids).subspan(s * k, k),
+                          earlier ? bound_from(seeds, s, earlier->of(s), k)
+                                  : std::numeric_limits<double>::infinity());
       });
   return n;
 }

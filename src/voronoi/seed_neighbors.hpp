@@ -34,9 +34,11 @@ void reject_non_finite_seeds(const std::vector<Vec3>& seeds);
 // Throws InvalidArgument for identical seeds (naming the first pair).
 void reject_identical_seeds(const std::vector<Vec3>& seeds);
 
-// Each seed's k nearest other seeds (fewer when there are fewer seeds).
+// Each seed's k nearest other seeds (fewer when there are fewer seeds). `earlier`, if given, holds
+// lists of other seeds (any k of a list bound how far its seed's search must look: an earlier
+// evaluation's lists for the seeds as they are now), which prune the searches from their start.
 SeedNeighbors nearest_neighbors(const std::vector<Vec3>& seeds, const PointTree& tree,
-                                std::size_t k);
+                                std::size_t k, const SeedNeighbors* earlier = nullptr);
 
 // Which of `seeds` differ from the seeds at `was` (moved, or came: an id past `was`; ids past
 // `seeds` went), and the nearest of those that moved or came to a point.
