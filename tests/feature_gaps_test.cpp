@@ -99,19 +99,7 @@ Index at(int i, int j) {
   return static_cast<Index>(1 + (i - 1) * (kAcross + 1) + j);
 }
 TriangleMesh wedge_with_tip(double deg, double radius) {
-  const double wedge = deg * std::numbers::pi / 180;
-  TriangleMesh sheet;
-  sheet.vertices.push_back({0, 0, 0});
-  for (int i = 1; i <= kRings; ++i)
-    for (int j = 0; j <= kAcross; ++j) {
-      const double r = radius * i / kRings, a = wedge * j / kAcross;
-      sheet.vertices.push_back({r * std::cos(a), r * std::sin(a), 0});
-    }
-  for (int j = 0; j < kAcross; ++j) sheet.triangles.push_back({0, at(1, j), at(1, j + 1)});
-  for (int i = 1; i < kRings; ++i)
-    for (int j = 0; j < kAcross; ++j)
-      add_quad(sheet, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-  return sheet;
+  return wedge_sheet(deg, radius, kRings, kAcross);
 }
 
 // The sizes on the ray y = 0, away from the tip's own edges and the arc.

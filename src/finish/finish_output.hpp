@@ -18,10 +18,12 @@ class SurfaceProjector;
 // `result.mesh`: the extraction topology control returned, after its last step (its first
 // vertices the seeds, by id); `seeds`: all the seeds, those topology control added from
 // `optimized_seeds` on. Fills `result`'s counts of what each step did, its feature edges, and the
-// vertices added.
+// vertices added. `narrow`: the input's angles under 30° between features; the triangles at those
+// the output traces are held to them in the last sweeps (improve_shapes).
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    std::size_t optimized_seeds, const SeedConstraints& constraints,
                    const Features& features, const CurveProjector& curves,
-                   const SurfaceProjector& projector, const RemeshSettings& settings);
+                   const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
+                   const RemeshSettings& settings);
 
 }  // namespace cvtmesh

@@ -106,6 +106,14 @@ int slot(const Triangle& t, Index v) {
   return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
 }
 
+// The score (as WorstShape's, 1 at best) of a triangle at a narrow input angle whose smallest
+// angle is `ratio` times that angle: 1 from the input angle up (no triangle there can do better),
+// that of a triangle at the bar elsewhere (θmin 30°) at 0.9 of it, the promise's bound for such
+// triangles (issue 18 item 6), and nothing from 0.8 down.
+double at_narrow_score(double ratio) {
+  return std::clamp(0.5 + 5 * (ratio - 0.9), 0.0, 1.0);
+}
+
 // The shape of a vertex's star: one closed disc (inside the surface), one half-disc (on a
 // boundary), or anything else (a pinch, a non-manifold edge, opposite orientations).
 enum class Star { disc, half_disc, other };
@@ -113,12 +121,14 @@ enum class Star { disc, half_disc, other };
 class ShapeImprover {
  public:
   ShapeImprover(TriangleMesh& mesh, const SurfaceProjector& surface, const CurveProjector* curves,
-                std::vector<VertexSupport> support, std::vector<Edge>& features)
+                std::vector<VertexSupport> support, std::vector<Edge>& features,
+                const std::vector<double>& narrow_at)
       : mesh_(mesh),
         surface_(surface),
         curves_(curves),
         support_(std::move(support)),
         features_(features),
+        narrow_at_(narrow_at),
         start_(mesh.vertices),
         gone_(mesh.triangles.size(), false),
         collapse_budget_(mesh.vertices.size() / kCollapsesPer),
@@ -234,7 +244,14 @@ class ShapeImprover {
     WorstShape worst;
     for (Index t : ts) {
       const auto [a, b, c] = mesh_.corners(t);
-      worst.add(a, b, c);
+      double input = 0;  // the narrowest input angle of a tip the triangle is at, if any
+      for (const Index v : mesh_.triangles[t])
+        if (v < narrow_at_.size() && narrow_at_[v] > 0)
+          input = input > 0 ? std::min(input, narrow_at_[v]) : narrow_at_[v];
+      if (input > 0)
+        worst.add(WorstShape{1, at_narrow_score(min_shape(a, b, c).min_angle / input)});
+      else
+        worst.add(a, b, c);
     }
     return worst;
   }
@@ -883,6 +900,7 @@ class ShapeImprover {
   const CurveProjector* curves_;
   std::vector<VertexSupport> support_;
   std::vector<Edge>& features_;            // sorted; a collapse along a curve renames one
+  const std::vector<double>& narrow_at_;   // per vertex: the narrow tip it traces, if any
   const std::vector<Vec3> start_;          // the vertices where they were
   mutable std::vector<double> start_gap_;  // per vertex, start_gap once measured
   std::vector<bool> gone_;                 // per triangle: taken away by a collapse
@@ -902,10 +920,11 @@ class ShapeImprover {
 
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
-                                std::vector<Edge>& feature_edges, int sweeps) {
+                                std::vector<Edge>& feature_edges, int sweeps,
+                                const std::vector<double>& narrow_at) {
   ShapeImprovement done;
   if (sweeps <= 0) return done;  // nothing to set up for
-  ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges);
+  ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges, narrow_at);
   const auto improve = [&] {
     for (int k = 0; k < sweeps && improver.sweep(done); ++k) {
     }

@@ -52,9 +52,14 @@ struct ShapeImprovement {
 // vertex, or a curve vertex along its curve (`feature_edges` then run from the vertex it merged
 // into), out of the triangles, leaving it unused; at most one vertex in 100 goes so. Each change
 // keeps the triangles it touches about as close to the surface as they were. Sequential, in a fixed
-// order: the result does not depend on the thread count.
+// order: the result does not depend on the thread count. `narrow_at` (per vertex; missing ones 0)
+// gives the input angle under 30° of a tip the output traces at that vertex: a triangle there is
+// judged by its smallest angle against that angle, as the quality promise judges it (issue 18
+// item 6), not against 60°, so that lifting it, which the input's angle bounds, never pays for a
+// worse triangle beside it.
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
-                                std::vector<Edge>& feature_edges, int sweeps);
+                                std::vector<Edge>& feature_edges, int sweeps,
+                                const std::vector<double>& narrow_at = {});
 
 }  // namespace cvtmesh

@@ -5,8 +5,24 @@
 
 #include "cvtmesh/quality.hpp"
 #include "geometry/point_tree.hpp"
+#include "quality/narrow_angles.hpp"
 
 namespace cvtmesh {
+
+std::vector<double> narrow_angle_at_vertices(const TriangleMesh& mesh,
+                                             const std::vector<NarrowAngle>& narrow,
+                                             double radius) {
+  std::vector<double> angle_at(mesh.vertices.size(), 0);
+  if (narrow.empty() || mesh.vertices.empty()) return angle_at;
+  const PointTree tree(mesh.vertices);
+  std::vector<Index> near;
+  for (const NarrowAngle& a : narrow) {
+    tree.within(a.at, radius * radius, near);
+    for (Index v : near)
+      angle_at[v] = angle_at[v] == 0 ? a.angle_deg : std::min(angle_at[v], a.angle_deg);
+  }
+  return angle_at;
+}
 
 NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityReport& quality,
                                      const std::vector<NarrowAngle>& narrow) {
@@ -17,15 +33,8 @@ NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityRepo
   if (narrow.empty() || mesh.triangles.empty()) return out;
   // A vertex within half an edge of a narrow angle stands for it: exactly there in an output
   // that keeps its corners, the nearest vertex in one that does not.
-  const double radius = 0.5 * quality.edge_length_mean;
-  const PointTree tree(mesh.vertices);
-  std::vector<double> angle_at(mesh.vertices.size(), 0);  // 0: at no narrow angle
-  std::vector<Index> near;
-  for (const NarrowAngle& a : narrow) {
-    tree.within(a.at, radius * radius, near);
-    for (Index v : near)
-      angle_at[v] = angle_at[v] == 0 ? a.angle_deg : std::min(angle_at[v], a.angle_deg);
-  }
+  const std::vector<double> angle_at =
+      narrow_angle_at_vertices(mesh, narrow, 0.5 * quality.edge_length_mean);
   double away = 180, q_away = 1, ratio = std::numeric_limits<double>::infinity();
   for (const Triangle& t : mesh.triangles) {
     const TriangleShape shape =

@@ -14,6 +14,7 @@
 #include "cvt/minimize.hpp"
 #include "cvt/polish_defects.hpp"
 #include "cvtmesh/errors.hpp"
+#include "cvtmesh/quality.hpp"
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
@@ -284,7 +285,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.triangles_closing_holes = last.closed.triangles;
   result.vertices_closing_holes = last.closed.vertices;
   finish_output(result, seeds, optimized_seeds, constraints, features, *curves, *projector,
-                settings);
+                narrow_feature_angles(mesh, features, kNarrowAngleDeg), settings);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);

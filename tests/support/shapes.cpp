@@ -246,6 +246,23 @@ TriangleMesh cylinder(int rings, int sectors) {
   return m;
 }
 
+TriangleMesh wedge_sheet(double deg, double radius, int rings, int across) {
+  const double wedge = deg * std::numbers::pi / 180;
+  const auto at = [&](int i, int j) { return static_cast<Index>(1 + (i - 1) * (across + 1) + j); };
+  TriangleMesh sheet;
+  sheet.vertices.push_back({0, 0, 0});
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j <= across; ++j) {
+      const double r = radius * i / rings, a = wedge * j / across;
+      sheet.vertices.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+  for (int j = 0; j < across; ++j) sheet.triangles.push_back({0, at(1, j), at(1, j + 1)});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < across; ++j)
+      add_quad(sheet, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  return sheet;
+}
+
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d) {
   mesh.triangles.push_back({a, b, c});
   mesh.triangles.push_back({a, c, d});
