@@ -108,6 +108,7 @@ bool shaped_better(const TriangleMesh& a, const TriangleMesh& b) {
 // other (lion.off at 1k: its 8° tip's nearest triangle has 41°).
 std::vector<double> traced_tips(const TriangleMesh& mesh, const std::vector<NarrowAngle>& narrow,
                                 double reach) {
+  if (narrow.empty()) return {};  // most inputs: no search, no pass over the triangles
   const std::vector<double> near = narrow_angle_at_vertices(mesh, narrow, reach);
   std::vector<double> tip(near.size(), 0);
   for (const Triangle& t : mesh.triangles)
@@ -169,7 +170,8 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   // leaves the triangles across the halved edge obtuse until the sweeps move its midpoint, and
   // where they cannot, the output without it is kept (ALSTOM_TEST4.off at 1k: Qmin 0.592 as it
   // is, 0.540 split).
-  const double reach = 0.5 * measure_quality(result.mesh).edge_length_mean;
+  // Half an edge: how near a narrow angle a vertex stands for it (as the report has it).
+  const double reach = narrow.empty() ? 0 : 0.5 * measure_quality(result.mesh).edge_length_mean;
   TriangleMesh split = result.mesh;
   const std::size_t corners_split = split_obtuse_corners(split, result.feature_edges, projector);
   std::vector<VertexSupport> split_supports;
