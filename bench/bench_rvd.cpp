@@ -36,6 +36,12 @@
 //     pass with integrals on them (pass_s); spread_over_pass is the cost in passes (the spread
 //     seeds spare the optimization about 5 of its first iterations, paper §4.1's initial
 //     sampling), and energy_ratio the spread seeds' CVT energy over the random ones'.
+//   BM_CvtPass/M: one evaluation of the CVT objective as the optimizer makes it in its steady
+//     state, on one thread: a diagram of 5,000 well-spread seeds (sample elimination, as a remesh
+//     starts) built with a warm NeighborCache, then traversed with integrals; M = 0 on icosphere
+//     level 5 (20,480 faces), 1 on ../shared/data/fandisk.off (12,946 faces). Timed as Google
+//     Benchmark times a loop (many iterations; compare runs by their min with repetitions),
+//     with counters polygons_per_pass and ns_per_polygon: the cost of the clipping core.
 //   BM_ExtractionAfterSeedsAdded/N: that extraction again after 1% more seeds came in, as a round
 //     of topology control adds them: with the TraversalMemory of the extraction before
 //     (remembered_s: lists carried over, the triangles no new seed reaches replayed) against one
@@ -46,6 +52,7 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -360,6 +367,37 @@ BENCHMARK(BM_MultiNerveExtraction)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+void BM_CvtPass(benchmark::State& state) {
+  const bool shared = state.range(0) == 1;
+  if (shared && !std::filesystem::exists(testing::shared_data() / "fandisk.off")) {
+    state.SkipWithError("fandisk.off not found (set CVTMESH_SHARED_DATA)");
+    return;
+  }
+  const TriangleMesh mesh = shared ? testing::shared_mesh("fandisk.off") : testing::icosphere(5);
+  const std::vector<Vec3> seeds = spread_samples(mesh, 5'000, 1);
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  NeighborCache cache;
+  { const RestrictedVoronoiDiagram warm(mesh, seeds, cache); }
+  std::size_t polygons = 0;
+  for (auto _ : state) {
+    const RestrictedVoronoiDiagram rvd(mesh, seeds, cache);
+    CellIntegrator integrator(rvd);
+    polygons = rvd.traverse(integrator).polygons;
+    benchmark::DoNotOptimize(integrator.result().total_energy);
+  }
+  state.counters["polygons_per_pass"] = static_cast<double>(polygons);
+  state.counters["ns_per_polygon"] =
+      benchmark::Counter(static_cast<double>(polygons) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(shared ? "fandisk.off" : "icosphere level 5");
+}
+BENCHMARK(BM_CvtPass)
+    ->DenseRange(0, 1)
+    ->Unit(benchmark::kMillisecond)
+    ->ComputeStatistics("min", [](const std::vector<double>& v) {
+      return *std::min_element(v.begin(), v.end());
+    });
 
 void BM_ExtractionAfterSeedsAdded(benchmark::State& state) {
   const TriangleMesh mesh = testing::icosphere(5);
