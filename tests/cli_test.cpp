@@ -687,12 +687,12 @@ TEST(CliRemesh, SeedsFileGivesTheStartAndTheSize) {
 
 TEST(CliRemesh, ProgressGoesToStderr) {
   TempDir dir;
-  write_mesh(dir / "sphere.off", icosphere(3));
-  const CliRun r = run_cli(dir, "remesh --vertices 200 --iterations 3 " +
-                                    quoted(dir / "sphere.off") + " " + quoted(dir / "out.obj"));
+  write_mesh(dir / "cube.off", cube(2));
+  const CliRun r = run_cli(dir, "remesh --vertices 200 --iterations 3 " + quoted(dir / "cube.off") +
+                                    " " + quoted(dir / "out.obj"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("rcvt    1  energy"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("ccvt"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ccvt"), std::string::npos) << r.err;  // the cube's creases bind seeds
 }
 
 TEST(CliRemesh, BadArgumentsGetClearErrors) {

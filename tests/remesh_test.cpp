@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/hausdorff.hpp"
@@ -152,6 +155,37 @@ TEST(Remesh, RcvtFromSpreadSeedsTakesHalfTheIterations) {
   s.vertices = 600;
   s.sizing.edge_length_at = [](const Vec3& p) { return 1.5 + p.z; };
   EXPECT_EQ(remesh(m, s).iterations, 5);
+}
+
+// With features to bind seeds to, RCVT then CCVT; without, and with ρ = 1, RCVT alone takes
+// both phases' iterations (its free seeds approximate the surface better, see the pipeline);
+// with a density, CCVT stays.
+TEST(Remesh, AFeatureFreeSurfaceSpendsBothPhasesOnRcvt) {
+  RemeshSettings s;
+  s.vertices = 600;
+  s.gradient_tolerance = 1e-12;  // the caps stop the phases
+  s.iterations = 4;
+  std::vector<std::string> phases;
+  s.progress = [&](const RemeshProgress& p) { phases.emplace_back(p.phase); };
+  const auto count = [&](const char* phase) {
+    return std::count(phases.begin(), phases.end(), phase);
+  };
+  const RemeshResult smooth = remesh(icosphere(4), s);
+  EXPECT_EQ(count("rcvt"), 2 + 4);
+  EXPECT_EQ(count("rcvt"), static_cast<std::ptrdiff_t>(phases.size()));
+  EXPECT_EQ(smooth.iterations, 6);
+  EXPECT_EQ(smooth.seconds_ccvt, 0);
+  EXPECT_TRUE(same_topology(analyze_topology(smooth.mesh), analyze_topology(icosphere(4))));
+  phases.clear();
+  const RemeshResult creased = remesh(cube(3), s);
+  EXPECT_EQ(count("rcvt"), 2);
+  EXPECT_GE(count("ccvt"), 4);
+  EXPECT_GT(creased.feature_edges.size(), 0u);
+  phases.clear();
+  s.sizing.edge_length_at = [](const Vec3& p) { return 1.5 + p.z; };
+  remesh(icosphere(4), s);
+  EXPECT_EQ(count("rcvt"), 2);
+  EXPECT_GE(count("ccvt"), 4);
 }
 
 TEST(Remesh, SameOutputOnOneAndAllThreads) {

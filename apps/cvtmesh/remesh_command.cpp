@@ -217,7 +217,9 @@ void add_remesh_command(CLI::App& app, Action& run) {
   cmd->add_option("--optimizer", o->optimizer, "lbfgs or lloyd")
       ->default_val("lbfgs")
       ->check(CLI::IsMember({"lbfgs", "lloyd"}));
-  cmd->add_option("--mode", o->mode, "rcvt, ccvt or both (RCVT then CCVT)")
+  cmd->add_option("--mode", o->mode,
+                  "rcvt, ccvt or both (RCVT then CCVT; RCVT alone on a surface without features "
+                  "and with uniform sizes)")
       ->default_val("both")
       ->check(CLI::IsMember({"rcvt", "ccvt", "both"}));
   cmd->add_option("--seed", o->settings.seed, "Random seed of the initial sampling")

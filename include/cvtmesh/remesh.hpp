@@ -38,7 +38,9 @@ struct RemeshSettings {
   int iterations = 10;         // cap on the iterations of each phase (RCVT from spread seeds: half)
   double gradient_tolerance = 1e-3;  // stop a phase when ‖∇F‖ falls below this × its start
   Optimizer optimizer = Optimizer::lbfgs;
-  CvtMode mode = CvtMode::both;     // both: RCVT, then CCVT (paper §4.2)
+  // both: RCVT, then CCVT (paper §4.2); on an input without features and with ρ = 1 (no
+  // adaptive or user sizes), RCVT alone, with CCVT's iterations too.
+  CvtMode mode = CvtMode::both;
   std::uint64_t seed = 1;           // random initial seeds: same seed, same output
   std::vector<Vec3> initial_seeds;  // if not empty: used instead of spread ones
   std::function<void(const RemeshProgress&)> progress;  // called once per iteration

@@ -205,7 +205,8 @@ topology_rounds : int, default 12
     differs in topology; the best round is kept (0: none).
 optimizer : {"lbfgs", "lloyd"}, default "lbfgs"
 mode : {"both", "rcvt", "ccvt"}, default "both"
-    RCVT then CCVT, or only one of them.
+    RCVT then CCVT (RCVT alone on a surface without features and with uniform sizes), or
+    only one of them.
 seed : int, default 1
     Random seed of the initial sampling: same seed, same output, on any thread count.
 feature_angle : float, degrees

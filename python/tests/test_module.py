@@ -118,7 +118,9 @@ class RemeshTest(unittest.TestCase):
         _, _, r = cvtmesh.remesh(self.V, self.F, vertices=300, progress=seen.append,
                                  no_hausdorff=True)
         self.assertEqual(len(seen), r["iterations"])
-        self.assertEqual({p.phase for p in seen}, {"rcvt", "ccvt"})
+        # A feature-free surface spends both phases' iterations on RCVT (a creased one shows
+        # "ccvt" too: Remesh.AFeatureFreeSurfaceSpendsBothPhasesOnRcvt in the C++ tests).
+        self.assertEqual({p.phase for p in seen}, {"rcvt"})
         self.assertTrue(all(p.energy > 0 and p.elapsed_seconds >= 0 for p in seen))
 
     def test_an_exception_in_the_callback_stops_the_remesh(self):
