@@ -191,7 +191,9 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   // 20 feature-free meshes of the corpus at 1k/5k/10k, seeds 1 and 2: Hausdorff mean lower on
   // 107 of 120 runs (median 0.96×), θmin and Qmin as good on average, 8% fewer RVD evaluations.
   // With a density, measured alike at 2k (--adaptive), the triangles came out a little less
-  // regular (θmin_ave lower on 14 of 19): there CCVT stays.
+  // regular (θmin_ave lower on 14 of 19): there CCVT stays. Only where the features are known
+  // before the CVT starts, as they are unless seeds are given or --gap-gradation is 0 (then they
+  // are detected while RCVT runs).
   const bool rcvt_throughout =
       settings.mode == CvtMode::both && features_first && features.empty() && density.empty();
   // RCVT when `bound` is null; CCVT with the seeds bound as it says otherwise.
