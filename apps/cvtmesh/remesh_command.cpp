@@ -183,7 +183,8 @@ void add_remesh_command(CLI::App& app, Action& run) {
                   "Clamp of the target lengths (with --adaptive or --sizing)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--iterations", o->settings.iterations,
-                  "Iteration cap per phase (half for RCVT from the evenly spread initial seeds)")
+                  "Iteration cap per phase (half for RCVT from the evenly spread initial seeds; "
+                  "RCVT alone, on a surface without features, takes CCVT's too)")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option(

@@ -185,7 +185,8 @@ seeds : (k, 3) float array
 seeds_file : str
     The same, read from a file ("x y z" lines, or a mesh's vertices).
 iterations : int, default 10
-    Iteration cap of each phase (RCVT, then CCVT).
+    Iteration cap of each phase (RCVT, then CCVT; half for RCVT from the spread initial seeds,
+    and RCVT alone, on a surface without features, takes CCVT's too).
 samples : int, default 20000
     Hausdorff samples per surface for the report, besides all vertices.
 no_hausdorff : bool, default False
