@@ -96,7 +96,7 @@ TEST(FeatureGaps, AWedgeUnder60DegreesNarrowsTowardsItsTip) {
 // i / kRings of `radius`.
 constexpr int kRings = 90, kAcross = 12;
 Index at(int i, int j) {
-  return static_cast<Index>(1 + (i - 1) * (kAcross + 1) + j);
+  return wedge_sheet_vertex(i, j, kAcross);
 }
 TriangleMesh wedge_with_tip(double deg, double radius) {
   return wedge_sheet(deg, radius, kRings, kAcross);

@@ -248,7 +248,7 @@ TriangleMesh cylinder(int rings, int sectors) {
 
 TriangleMesh wedge_sheet(double deg, double radius, int rings, int across) {
   const double wedge = deg * std::numbers::pi / 180;
-  const auto at = [&](int i, int j) { return static_cast<Index>(1 + (i - 1) * (across + 1) + j); };
+  const auto at = [&](int i, int j) { return wedge_sheet_vertex(i, j, across); };
   TriangleMesh sheet;
   sheet.vertices.push_back({0, 0, 0});
   for (int i = 1; i <= rings; ++i)

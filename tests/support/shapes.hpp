@@ -37,9 +37,13 @@ TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double
 
 // A flat sheet in z = 0 ending in a tip of `deg` degrees at the origin: the tip vertex, then
 // `rings` rings of `across` + 1 vertices out to `radius` (ring i, step j is vertex
-// 1 + (i - 1)(across + 1) + j, at radius i / rings of `radius` and angle j / across of `deg`);
-// open, one boundary loop, the tip a corner of its two straight sides.
+// wedge_sheet_vertex(i, j, across), at radius i / rings of `radius` and angle j / across of
+// `deg`); open, one boundary loop, the tip a corner of its two straight sides.
 TriangleMesh wedge_sheet(double deg, double radius, int rings, int across);
+// The id in wedge_sheet of ring i (1 to rings), step j (0 to across).
+inline Index wedge_sheet_vertex(int i, int j, int across) {
+  return static_cast<Index>(1 + (i - 1) * (across + 1) + j);
+}
 
 // The unit square in z = 0 as 3 × 3 blocks of n × n quads, without the centre block and the
 // top-right one: the two holes meet at the point (2/3, 2/3), which is stored twice, once for each
