@@ -196,5 +196,20 @@ TEST(SplitForSizes, AnEvenRemeshGradesDownToAPinholeAndKeepsItsAnglesWide) {
   EXPECT_LT(even.angle_min_deg, 5);
 }
 
+// Issue 20: the adaptive lengths, held by the clamp on the local feature size at a third of
+// their median, narrow further to a hole far smaller than that, as the even ones do.
+TEST(SplitForSizes, AnAdaptiveRemeshGradesDownToAPinholeBelowItsClamp) {
+  const TriangleMesh m = plate_with_pinhole(10, 1e-4);
+  RemeshSettings s;
+  s.vertices = 400;
+  s.seed = 3;
+  s.sizing.adaptive = 1.5;
+  const RemeshResult graded = remesh(m, s);
+  const TopologyReport in = analyze_topology(m), out = analyze_topology(graded.mesh);
+  EXPECT_TRUE(out.is_manifold());
+  EXPECT_TRUE(same_topology(out, in));
+  EXPECT_GT(measure_quality(graded.mesh).angle_min_deg, 25);
+}
+
 }  // namespace
 }  // namespace cvtmesh

@@ -84,6 +84,8 @@ struct SizingSettings {
   // The raw estimate falls towards 0 where parts touch, at creases and on noise: unclamped,
   // a few such spots would take a large share of the vertices and cells far smaller than
   // their neighbours (diplodocus at 2k: θmin 2.9°, topology lost; clamped at 10: see README).
+  // A hole far smaller than the clamp allows narrows the lengths further, to about six edges
+  // around it, as an even sizing's holes do.
   double adaptive_range = 10;
   // Or a target length per input vertex, in the mesh's units (> 0 and finite on the vertices the
   // triangles use).

@@ -20,6 +20,7 @@
 #include "geometry/median.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
+#include "sizing/small_holes.hpp"
 
 namespace cvtmesh {
 
@@ -132,28 +133,6 @@ class GapFinder {
   std::optional<PointTree> tip_tree_;
 };
 
-// `sizes` lowered on each boundary loop shorter than 2π times them to its length over 2π: about
-// six edges around a hole, whatever its shape. The facing rule misses the smallest holes, which
-// are triangles (no two sides of an equilateral one face each other), and a hole a few edges
-// round with edges of the even length around it gets slivers (lion.off at 1k, a hole 1.9 edges
-// round: θmin 18.8° at length over π, 40.3° at length over 2π).
-void cap_at_small_holes(const TriangleMesh& mesh, std::vector<double>& sizes) {
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
-  // None at a vertex with two boundary edges leaving it, where loops are not defined (repair
-  // leaves none: it keeps such a vertex as one copy per fan).
-  const std::optional<std::vector<BoundaryLoop>> loops = boundary_loops(mesh, uses);
-  if (!loops) return;
-  for (const BoundaryLoop& loop : *loops) {
-    // Summed along the triangles' orientation (the loop backwards), from its smallest vertex.
-    const std::size_t n = loop.vertices.size();
-    double length = 0;
-    for (std::size_t i = n; i > 0; --i)
-      length += distance(mesh.vertices[loop.vertices[i % n]], mesh.vertices[loop.vertices[i - 1]]);
-    const double width = length / (2 * std::numbers::pi);
-    for (const Index v : loop.vertices) sizes[v] = std::min(sizes[v], width);
-  }
-}
-
 // How far each side of a sector runs along its curve from the apex, when the apex is an end of
 // that curve (a corner, which the output keeps as a vertex); 0 when the curve goes on through the
 // apex (a curve folding back where detection found no corner is not kept as a tip: lion.off at
@@ -215,6 +194,28 @@ std::vector<Vec3> tips_left(const TriangleMesh& mesh, const Features& features,
 }
 
 }  // namespace
+
+// `sizes` lowered on each boundary loop shorter than 2π times them to its length over 2π: about
+// six edges around a hole, whatever its shape. The facing rule misses the smallest holes, which
+// are triangles (no two sides of an equilateral one face each other), and a hole a few edges
+// round with edges of the even length around it gets slivers (lion.off at 1k, a hole 1.9 edges
+// round: θmin 18.8° at length over π, 40.3° at length over 2π).
+void cap_at_small_holes(const TriangleMesh& mesh, std::vector<double>& sizes) {
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  // None at a vertex with two boundary edges leaving it, where loops are not defined (repair
+  // leaves none: it keeps such a vertex as one copy per fan).
+  const std::optional<std::vector<BoundaryLoop>> loops = boundary_loops(mesh, uses);
+  if (!loops) return;
+  for (const BoundaryLoop& loop : *loops) {
+    // Summed along the triangles' orientation (the loop backwards), from its smallest vertex.
+    const std::size_t n = loop.vertices.size();
+    double length = 0;
+    for (std::size_t i = n; i > 0; --i)
+      length += distance(mesh.vertices[loop.vertices[i % n]], mesh.vertices[loop.vertices[i - 1]]);
+    const double width = length / (2 * std::numbers::pi);
+    for (const Index v : loop.vertices) sizes[v] = std::min(sizes[v], width);
+  }
+}
 
 std::vector<double> capped_by_feature_gaps(const TriangleMesh& mesh, const Features& features,
                                            std::vector<double> sizes, WedgeGaps wedges) {
