@@ -1,6 +1,7 @@
 // Topology control of the output (paper §4.4): cells in several pieces are found, feature
 // curves cut by a third cell get a seed of their own there, and the best round is kept.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 #include <cstdio>
 
 #include <algorithm>
@@ -28,6 +29,7 @@
 #include "remesh/pinch_defects.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
+#include "voronoi/cell_pieces.hpp"
 #include "voronoi/piece_euler.hpp"
 
 namespace cvtmesh {
@@ -202,6 +204,66 @@ std::vector<int> piece_eulers(const TriangleMesh& surface, const std::vector<Vec
   std::vector<int> out;
   for (const PieceShape& shape : euler.shapes(pieces)) out.push_back(shape.euler);
   return out;
+}
+
+// The pieces of the cells of seeds between two plates closer than their spacing (each cell
+// reaches both, one piece on each): per seed, largest first, each polygon's piece its own seed's,
+// their areas adding up to the surface's; the same on one thread as on all (the cells are joined
+// in parallel).
+TEST(CellPieces, AreOrderedPerSeedAndTheSameOnAnyThreadCount) {
+  const auto plate = [](double z) {
+    return mapped_grid(12, 12, [z](double u, double v) { return Vec3{u, v, z}; });
+  };
+  const TriangleMesh plates = concatenate(plate(0), plate(0.05));
+  const std::vector<Vec3> seeds = sample_surface(plates, 40, 5);
+  // Each polygon's (seed, triangle), as traversed.
+  struct PolygonList : PolygonSink {
+    std::vector<std::vector<std::pair<Index, Index>>> chunks;
+    void begin(std::size_t n) override { chunks.assign(n, {}); }
+    void polygon(std::size_t chunk, const RvdPolygon& p) override {
+      chunks[chunk].push_back({p.seed, p.triangle});
+    }
+  };
+  // The pieces, and each polygon's piece.
+  const auto pieces_on = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                                    static_cast<std::size_t>(threads));
+    const RestrictedVoronoiDiagram rvd(plates, seeds);
+    CellPieceCollector pieces(plates);
+    PolygonList list;
+    PolygonSink* sinks[] = {&pieces, &list};
+    rvd.traverse(sinks);
+    std::vector<std::size_t> of_polygon;
+    for (const auto& chunk : list.chunks)
+      for (const auto& [seed, triangle] : chunk) {
+        of_polygon.push_back(pieces.piece_at(seed, triangle));
+        EXPECT_EQ(pieces.pieces()[of_polygon.back()].seed, seed);
+      }
+    return std::pair(pieces.pieces(), of_polygon);
+  };
+  const auto [one, one_of_polygon] = pieces_on(1);
+  const auto [all, all_of_polygon] = pieces_on(4);
+  EXPECT_EQ(one_of_polygon, all_of_polygon);
+  ASSERT_EQ(one.size(), all.size());
+  double area = 0;
+  std::size_t split_cells = 0;
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].seed, all[i].seed);
+    EXPECT_EQ(one[i].first, all[i].first);
+    EXPECT_EQ(one[i].area, all[i].area);
+    EXPECT_EQ(one[i].moment, all[i].moment);
+    EXPECT_EQ(one[i].largest_centre, all[i].largest_centre);
+    area += one[i].area;
+    if (i > 0 && one[i].seed == one[i - 1].seed) {
+      EXPECT_GE(one[i - 1].area, one[i].area);
+      ++split_cells;
+    }
+    if (i > 0) {
+      EXPECT_LE(one[i - 1].seed, one[i].seed);
+    }
+  }
+  EXPECT_NEAR(area, surface_area(plates), 1e-12 * surface_area(plates));
+  EXPECT_GT(split_cells, 10u);  // most cells reach both plates
 }
 
 TEST(PieceEuler, EveryCellOfWellSpreadSeedsIsADisc) {

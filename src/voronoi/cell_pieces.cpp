@@ -1,5 +1,8 @@
 #include "voronoi/cell_pieces.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -98,52 +101,71 @@ void CellPieceCollector::end() {
   std::vector<std::size_t>().swap(next);
   sort_each_seed(piece_of_, piece_offsets_,
                  [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
-  // Polygons of a cell around an input edge are one piece (see begin).
-  UnionFind roots(polygons.size());
-  for (std::size_t p = 0; p < polygons.size(); ++p) {
-    const Polygon& polygon = polygons[p];
-    for (std::uint32_t e = 0; e < 3; ++e) {
-      if (!(polygon.sides & (1u << e))) continue;
-      const std::uint32_t side = 3 * polygon.triangle + e;
-      for (std::uint32_t other = around_[side]; other != side; other = around_[other])
-        if (const PieceOf* q = entry(polygon.seed, other / 3)) roots.unite(p, q->piece);
-    }
-  }
-  std::vector<std::uint32_t>().swap(around_);
+  // Polygons of a cell around an input edge are one piece (see begin). A cell's polygons meet
+  // only each other, so the cells are joined and summed on their own, in parallel; each cell's
+  // polygons come in traversal order (by triangle, as the chunks hold them), so its pieces' sums
+  // and first polygons do not depend on the thread count. (igea.ply at 10k: 430k polygons, this
+  // step 0.08 s of each extraction's 0.11 s of serial work.)
+  UnionFind roots(polygons.size());  // each cell's sets apart from the others'
+  // Per root polygon, its piece's index among its seed's, sorted by area (largest first), then
+  // first polygon; and per seed, those pieces.
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-  std::vector<std::size_t> slot(polygons.size(), kNone);  // root -> index in pieces_
-  pieces_.clear();
-  for (std::size_t p = 0; p < polygons.size(); ++p) {
-    const std::size_t r = roots.find(p);
-    if (slot[r] == kNone) {
-      slot[r] = pieces_.size();
-      pieces_.push_back({polygons[p].seed, p, 0, {}, {}, -1});
+  std::vector<std::size_t> rank(polygons.size(), kNone);
+  std::vector<std::vector<CellPiece>> of_seed(seeds);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
+    for (Index seed = range.begin(); seed != range.end(); ++seed) {
+      const std::size_t begin = piece_offsets_[seed], end = piece_offsets_[seed + 1];
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t p = piece_of_[i].piece;
+        const Polygon& polygon = polygons[p];
+        for (std::uint32_t e = 0; e < 3; ++e) {
+          if (!(polygon.sides & (1u << e))) continue;
+          const std::uint32_t side = 3 * polygon.triangle + e;
+          for (std::uint32_t other = around_[side]; other != side; other = around_[other])
+            if (const PieceOf* q = entry(seed, other / 3)) roots.unite(p, q->piece);
+        }
+      }
+      // The pieces as their first polygons come (rank holds a root's piece for now).
+      std::vector<CellPiece>& pieces = of_seed[seed];
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t p = piece_of_[i].piece, r = roots.find(p);
+        if (rank[r] == kNone) {
+          rank[r] = pieces.size();
+          pieces.push_back({seed, p, 0, {}, {}, -1});
+        }
+        CellPiece& piece = pieces[rank[r]];
+        const Polygon& polygon = polygons[p];
+        const bool has_area = polygon.area > 0;
+        piece.area += polygon.area;
+        if (has_area) piece.moment += polygon.moment;
+        if (polygon.area > piece.largest_area) {
+          piece.largest_area = polygon.area;
+          piece.largest_centre = has_area ? (1 / polygon.area) * polygon.moment : polygon.moment;
+        }
+      }
+      std::sort(pieces.begin(), pieces.end(), [](const CellPiece& x, const CellPiece& y) {
+        return std::make_tuple(-x.area, x.first) < std::make_tuple(-y.area, y.first);
+      });
+      for (std::size_t k = 0; k < pieces.size(); ++k) rank[roots.find(pieces[k].first)] = k;
+      // Only this seed's entries are read for it (entry): each becomes its piece's rank.
+      for (std::size_t i = begin; i < end; ++i)
+        piece_of_[i].piece = rank[roots.find(piece_of_[i].piece)];
     }
-    CellPiece& piece = pieces_[slot[r]];
-    const Polygon& polygon = polygons[p];
-    const bool has_area = polygon.area > 0;
-    piece.area += polygon.area;
-    if (has_area) piece.moment += polygon.moment;
-    if (polygon.area > piece.largest_area) {
-      piece.largest_area = polygon.area;
-      piece.largest_centre = has_area ? (1 / polygon.area) * polygon.moment : polygon.moment;
-    }
-  }
-  std::vector<std::size_t> order(pieces_.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const CellPiece &x = pieces_[a], &y = pieces_[b];
-    return std::make_tuple(x.seed, -x.area, x.first) < std::make_tuple(y.seed, -y.area, y.first);
   });
-  std::vector<std::size_t> rank(order.size());
-  std::vector<CellPiece> sorted;
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    rank[order[i]] = i;
-    sorted.push_back(pieces_[order[i]]);
-  }
-  pieces_ = std::move(sorted);
-  // Each seed's (triangle, polygon) becomes (triangle, piece).
-  for (PieceOf& of : piece_of_) of.piece = rank[slot[roots.find(of.piece)]];
+  std::vector<std::uint32_t>().swap(around_);
+  // The pieces in seed order; each seed's ranks become indices in pieces_.
+  std::vector<std::size_t> first_piece(static_cast<std::size_t>(seeds) + 1, 0);
+  for (Index seed = 0; seed < seeds; ++seed)
+    first_piece[seed + 1] = first_piece[seed] + of_seed[seed].size();
+  pieces_.resize(first_piece[seeds]);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
+    for (Index seed = range.begin(); seed != range.end(); ++seed) {
+      std::copy(of_seed[seed].begin(), of_seed[seed].end(),
+                pieces_.begin() + static_cast<std::ptrdiff_t>(first_piece[seed]));
+      for (std::size_t i = piece_offsets_[seed]; i < piece_offsets_[seed + 1]; ++i)
+        piece_of_[i].piece += first_piece[seed];
+    }
+  });
 }
 
 const CellPieceCollector::PieceOf* CellPieceCollector::entry(Index seed, Index triangle) const {
