@@ -115,9 +115,10 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
   return {std::move(h), {}, 0, {}, 0};
 }
 
-// An adaptive sizing's feature gaps (raw.gap), looked for under a few times the lengths scaled
-// by k: the count's factor moves little from its first estimate, and a wider gap is no narrow
-// place; and its holes under the clamp (raw.hole). An even sizing's gaps.
+// The feature gaps (raw.gap): an adaptive sizing's looked for under a few times the lengths
+// scaled by k (the count's factor moves little from its first estimate, and a wider gap is no
+// narrow place), an even one's under half its length; and an adaptive sizing's holes under its
+// clamp (raw.hole).
 void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
                       const SizingSettings& s, RawSizes& raw) {
   constexpr double kGapReach = 3;
@@ -172,9 +173,10 @@ bool no_gap(const RawSizes& raw) {
 // The lengths h·k, capped at the feature gaps (no lower than the raw floor, scaled) and the
 // holes (no lower than theirs), graded (for an adaptive sizing), then clamped; vertices in no
 // triangle get 1 (they carry no area). Graded after the scaling, so that neighbouring output
-// edges differ by the gradation's bound whatever the count; the clamps keep that bound. A gap's cap is a length, not scaled: a strip between
-// two creases wants edges about as long as it is wide, whatever the count elsewhere. `graph`:
-// the mesh's, where the caller grades many fields on it (else built here).
+// edges differ by the gradation's bound whatever the count; the clamps keep that bound. A gap's
+// cap is a length, not scaled: a strip between two creases wants edges about as long as it is
+// wide, whatever the count elsewhere. `graph`: the mesh's, where the caller grades many fields on
+// it (else built here).
 std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
                                  const std::vector<bool>& used, double k, const SizingSettings& s,
                                  const EdgeGraph* graph = nullptr) {
