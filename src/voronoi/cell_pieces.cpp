@@ -154,9 +154,9 @@ void CellPieceCollector::end() {
   });
   std::vector<std::uint32_t>().swap(around_);
   // The pieces in seed order; each seed's ranks become indices in pieces_.
-  std::vector<std::size_t> first_piece(static_cast<std::size_t>(seeds) + 1, 0);
-  for (Index seed = 0; seed < seeds; ++seed)
-    first_piece[seed + 1] = first_piece[seed] + of_seed[seed].size();
+  std::vector<std::size_t> pieces_of(static_cast<std::size_t>(seeds) + 1, 0);
+  for (Index seed = 0; seed < seeds; ++seed) pieces_of[seed + 1] = of_seed[seed].size();
+  const std::vector<std::size_t> first_piece = seed_offsets(std::move(pieces_of));
   pieces_.resize(first_piece[seeds]);
   tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
     for (Index seed = range.begin(); seed != range.end(); ++seed) {
