@@ -9,6 +9,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "cvtmesh/allocator.hpp"
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
 #include "cvtmesh/remesh.hpp"
@@ -288,6 +289,10 @@ void add_remesh(py::module_& m) {
         py::arg("max_edge_length") = defaults.sizing.max_edge_length,
         py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true,
         py::arg("threads") = 0, py::arg("progress") = nullptr);
+  m.def("keep_freed_memory", &keep_freed_memory,
+        R"(Make this process's allocator keep freed memory for reuse (glibc's mallopt): remeshes
+14-20% faster, peak memory 1-10% higher, for every later allocation of the process. The cvtmesh
+program and cvtmesh.batch's workers call it; import cvtmesh does not.)");
 }
 
 }  // namespace cvtmesh::python

@@ -6,7 +6,8 @@
     print(report["q_min"], report["angle_min_deg"], report["same_topology"])
     cvtmesh.write("knot-3k.off", V2, F2)
 
-Functions: remesh, read, write, quality, triangle_shapes, features, lfs, rvd (see help() of each). Arrays in:
+Functions: remesh, read, write, quality, triangle_shapes, features, lfs, rvd, keep_freed_memory
+(see help() of each). Arrays in:
 (n, 3) float vertex coordinates and (m, 3) int triangles. Arrays out: float64 and int32,
 handed over without copies. Reports are dicts with the keys of the CLI's --json.
 
@@ -18,6 +19,7 @@ from ._cvtmesh import (  # noqa: F401  (the package's API)
     RemeshProgress,
     __version__,
     features,
+    keep_freed_memory,
     lfs,
     quality,
     read,
@@ -28,4 +30,4 @@ from ._cvtmesh import (  # noqa: F401  (the package's API)
 )
 
 __all__ = ["remesh", "read", "write", "quality", "triangle_shapes", "features", "lfs", "rvd",
-           "RemeshProgress", "__version__"]
+           "keep_freed_memory", "RemeshProgress", "__version__"]

@@ -101,11 +101,20 @@ class Rows:
         os.replace(temporary, self.path)
 
 
+def start_worker():
+    """A pool worker only remeshes: its allocator keeps freed memory for the next evaluation
+    (cvtmesh.keep_freed_memory; Dask workers, which are not ours, are left as they are)."""
+    import cvtmesh
+
+    cvtmesh.keep_freed_memory()
+
+
 def run_local(tasks, jobs, on_row):
     """On a process pool. Workers are spawned, not forked: a forked copy of a process whose
     oneTBB threads have started can deadlock."""
     context = multiprocessing.get_context("spawn")
-    with concurrent.futures.ProcessPoolExecutor(jobs, mp_context=context) as pool:
+    with concurrent.futures.ProcessPoolExecutor(jobs, mp_context=context,
+                                                initializer=start_worker) as pool:
         futures = {pool.submit(remesh_file, *task): task for task in tasks}
         try:
             for future in concurrent.futures.as_completed(futures):

@@ -80,6 +80,12 @@ class RemeshTest(unittest.TestCase):
         np.testing.assert_array_equal(one[0], self.V2)
         np.testing.assert_array_equal(one[1], self.F2)
 
+    def test_keeping_freed_memory_changes_no_output(self):
+        cvtmesh.keep_freed_memory()  # from here on, for the whole process
+        again = cvtmesh.remesh(self.V, self.F, vertices=600, seed=3, no_hausdorff=True)
+        np.testing.assert_array_equal(again[0], self.V2)
+        np.testing.assert_array_equal(again[1], self.F2)
+
     def test_sizes_and_options(self):
         h = 0.15
         V2, _, r = cvtmesh.remesh(self.V, self.F, edge_length=h, no_hausdorff=True,
