@@ -53,6 +53,19 @@ TEST(ImproveShapes, FlipsTheLongDiagonalOfAFlatPair) {
   EXPECT_EQ(mesh.vertices, flat_pair().vertices);  // all on the boundary: none moves
 }
 
+TEST(ImproveShapes, LeavesTrianglesWithoutAnActiveVertexAlone) {
+  TriangleMesh mesh = flat_pair();
+  const SurfaceProjector surface(mesh);
+  std::vector<Edge> features;
+  const ShapeImprovement done =
+      improve_shapes(mesh, surface, nullptr, {}, features, 5, {}, std::vector<bool>(4, false));
+  EXPECT_EQ(done.flips, 0u);
+  EXPECT_TRUE(has_edge(mesh, 0, 1));
+  // One active vertex is enough for its triangles to be worked on.
+  improve_shapes(mesh, surface, nullptr, {}, features, 5, {}, {false, false, true, false});
+  EXPECT_TRUE(has_edge(mesh, 2, 3));
+}
+
 // A pair on a cylinder of radius 1 split along a chord of its circumference, a-b, 0.69 long,
 // with c and d on the cylinder 0.15 above and below the chord's middle: angles of about 25° at
 // a and b, and the two triangles fold by about 44° along the chord. The other diagonal, c-d, lies

@@ -190,10 +190,14 @@ TEST(SplitForSizes, AnEvenRemeshGradesDownToAPinholeAndKeepsItsAnglesWide) {
   EXPECT_TRUE(same_topology(out, in));
   const QualityReport q = measure_quality(graded.mesh);
   EXPECT_GT(q.angle_min_deg, 25);
-  // Not graded, the fan around the hole is all slivers.
+  // Not graded, the fan around the hole is all slivers (under 5° until the halving rounds of
+  // finish_output): halving its obtuse triangles lifts it, to 29° here, short of the grading.
   s.sizing.gap_gradation = 0;
-  const QualityReport even = measure_quality(remesh(m, s).mesh);
-  EXPECT_LT(even.angle_min_deg, 5);
+  const RemeshResult ungraded = remesh(m, s);
+  EXPECT_GT(ungraded.obtuse_corners_split, 0u);
+  const double even = measure_quality(ungraded.mesh).angle_min_deg;
+  EXPECT_GT(even, 20);
+  EXPECT_LT(even, q.angle_min_deg - 5);
 }
 
 // Issue 20: the adaptive lengths, held by the clamp on the local feature size at a third of

@@ -1,6 +1,7 @@
 // Boundary corners whose one triangle holds an obtuse angle (finish/split_obtuse_corners): the
 // edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
-// across a feature edge, where the surface is far, at an inner vertex or under 100°.
+// across a feature edge, where the surface is far, at an inner vertex or under 100°. Under the bar
+// (ObtuseCorners::under_bar): inner vertices too, the worst first, few at a time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,6 +70,48 @@ TEST(SplitObtuseCorners, NothingAcrossAFeatureFarFromTheSurfaceAtAnInnerVertexOr
   const std::size_t triangles = inner.triangles.size();
   EXPECT_EQ(split_obtuse_corners(inner, {}, SurfaceProjector(inner)), 0u);
   EXPECT_EQ(inner.triangles.size(), triangles);
+}
+
+// The ear's corner made an inner vertex: a fan closing round it, shifted by `x`.
+TriangleMesh inner_corner(double deg, double x = 0) {
+  TriangleMesh m = ear(deg);
+  m.vertices.push_back({-1.5, 2, 0});
+  m.vertices.push_back({1.5, 2, 0});
+  m.triangles.push_back({2, 4, 0});
+  m.triangles.push_back({2, 5, 4});
+  m.triangles.push_back({2, 1, 5});
+  for (Vec3& p : m.vertices) p.x += x;
+  return m;
+}
+
+TEST(SplitObtuseCorners, UnderTheBarAnInnerObtuseCornerIsSplitToo) {
+  TriangleMesh m = inner_corner(114);  // Q about 0.5
+  const TopologyReport before = analyze_topology(m);
+  const SurfaceProjector plane(m);
+  EXPECT_EQ(split_obtuse_corners(m, {}, plane, ObtuseCorners::at_boundary), 0u);
+  EXPECT_EQ(split_obtuse_corners(m, {}, plane, ObtuseCorners::under_bar), 1u);
+  const TopologyReport after = analyze_topology(m);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_TRUE(after.consistently_oriented);
+  EXPECT_TRUE(same_topology(after, before));
+  EXPECT_EQ(m.vertices.back(), (Vec3{0, 0, 0}));
+  // At 102°, between two 39° angles, the triangle's Q is 0.61: at the bar, left as it is.
+  TriangleMesh at_bar = inner_corner(102);
+  EXPECT_EQ(split_obtuse_corners(at_bar, {}, SurfaceProjector(at_bar), ObtuseCorners::under_bar),
+            0u);
+}
+
+TEST(SplitObtuseCorners, UnderTheBarTheWorstIsSplitFirstAndOnePerHundredVertices) {
+  // Two fans apart, 12 vertices: one split; the 124° corner's, not the 114° one's.
+  TriangleMesh m = inner_corner(114);
+  const TriangleMesh worse = inner_corner(124, 10);
+  for (Triangle t : worse.triangles) {
+    for (Index& v : t) v += static_cast<Index>(m.vertices.size());
+    m.triangles.push_back(t);
+  }
+  m.vertices.insert(m.vertices.end(), worse.vertices.begin(), worse.vertices.end());
+  EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar), 1u);
+  EXPECT_EQ(m.vertices.back(), (Vec3{10, 0, 0}));
 }
 
 }  // namespace

@@ -164,8 +164,9 @@ struct RemeshResult {
   // others often end. The topology stays; so may the count of vertices asked for not.
   std::size_t valence_three_removed = 0;
   // Triangles over 100° at a boundary vertex (a boundary corner, whose angle no flip or move
-  // changes) halved across from it (finish/split_obtuse_corners), where the shape sweeps then
-  // left the output better than without: a vertex added each.
+  // changes), or at any vertex in a triangle the shape sweeps left under the bar's Q 0.6, halved
+  // across from it (finish/split_obtuse_corners), where the shape sweeps then left the output
+  // better than without: a vertex added each.
   std::size_t obtuse_corners_split = 0;
   // The output's last touch, after all the above: edges flipped between nearly coplanar
   // triangles and vertices moved along the surface, around badly shaped triangles, each only

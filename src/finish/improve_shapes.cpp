@@ -122,13 +122,14 @@ class ShapeImprover {
  public:
   ShapeImprover(TriangleMesh& mesh, const SurfaceProjector& surface, const CurveProjector* curves,
                 std::vector<VertexSupport> support, std::vector<Edge>& features,
-                const std::vector<double>& narrow_at)
+                const std::vector<double>& narrow_at, std::vector<bool> active)
       : mesh_(mesh),
         surface_(surface),
         curves_(curves),
         support_(std::move(support)),
         features_(features),
         narrow_at_(narrow_at),
+        active_(std::move(active)),
         start_(mesh.vertices),
         gone_(mesh.triangles.size(), false),
         collapse_budget_(mesh.vertices.size() / kCollapsesPer),
@@ -144,7 +145,7 @@ class ShapeImprover {
     start_gap_.assign(mesh_.vertices.size(), kNotMeasured);
     // A held saddle's gap is measured as a movable vertex's: it moves in the second pass.
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
-      const Hold why = hold(v);
+      const Hold why = v < active_.size() && !active_[v] ? Hold::fixed : hold(v);
       if (why == Hold::none) continue;
       if (why == Hold::saddle)
         saddles_.push_back(v);
@@ -264,6 +265,9 @@ class ShapeImprover {
   WorstShape star_shape(Index v) const { return worst_of(around_[v]); }
 
   bool bad(Index t) const {
+    if (!active_.empty() && std::none_of(mesh_.triangles[t].begin(), mesh_.triangles[t].end(),
+                                         [&](Index v) { return v < active_.size() && active_[v]; }))
+      return false;
     const auto [a, b, c] = mesh_.corners(t);
     return badly_shaped(a, b, c);
   }
@@ -901,6 +905,7 @@ class ShapeImprover {
   std::vector<VertexSupport> support_;
   std::vector<Edge>& features_;            // sorted; a collapse along a curve renames one
   const std::vector<double>& narrow_at_;   // per vertex: the narrow tip it traces, if any
+  const std::vector<bool> active_;         // per vertex: whether it may change (empty: all)
   const std::vector<Vec3> start_;          // the vertices where they were
   mutable std::vector<double> start_gap_;  // per vertex, start_gap once measured
   std::vector<bool> gone_;                 // per triangle: taken away by a collapse
@@ -921,10 +926,11 @@ class ShapeImprover {
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
                                 std::vector<Edge>& feature_edges, int sweeps,
-                                const std::vector<double>& narrow_at) {
+                                const std::vector<double>& narrow_at, std::vector<bool> active) {
   ShapeImprovement done;
   if (sweeps <= 0) return done;  // nothing to set up for
-  ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges, narrow_at);
+  ShapeImprover improver(mesh, surface, curves, std::move(support), feature_edges, narrow_at,
+                         std::move(active));
   const auto improve = [&] {
     for (int k = 0; k < sweeps && improver.sweep(done); ++k) {
     }

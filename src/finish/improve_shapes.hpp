@@ -56,10 +56,12 @@ struct ShapeImprovement {
 // gives the input angle under 30° of a tip the output traces at that vertex: a triangle there is
 // judged by its smallest angle against that angle, as the quality promise judges it (issue 18
 // item 6), not against 60°, so that lifting it, which the input's angle bounds, never pays for a
-// worse triangle beside it.
+// worse triangle beside it. `active` (per vertex; empty: all) limits the work to the triangles
+// with an active vertex, and the moves to active vertices.
 ShapeImprovement improve_shapes(TriangleMesh& mesh, const SurfaceProjector& surface,
                                 const CurveProjector* curves, std::vector<VertexSupport> support,
                                 std::vector<Edge>& feature_edges, int sweeps,
-                                const std::vector<double>& narrow_at = {});
+                                const std::vector<double>& narrow_at = {},
+                                std::vector<bool> active = {});
 
 }  // namespace cvtmesh

@@ -16,12 +16,19 @@ namespace cvtmesh {
 
 class SurfaceProjector;
 
-// For each triangle with an angle over 100° at a boundary vertex, halves the edge across from it
-// where that edge has two triangles, used in opposite directions, and is no feature edge
+// Which obtuse corners split_obtuse_corners halves across from.
+enum class ObtuseCorners {
+  at_boundary,  // at a boundary vertex, which no flip or move opens up
+  under_bar,    // at any vertex, in a triangle under the bar's Q (those the shape sweeps left)
+};
+
+// For each triangle with an angle over 100° at a corner of `which` kind, halves the edge across
+// from it where that edge has two triangles, used in opposite directions, and is no feature edge
 // (`features`, sorted) and its middle lies within a quarter of its length of `surface`: the
 // nearest point there is appended to the vertices, and the two triangles become four, in their
 // orientation. A triangle is split once at most. Returns the vertices added.
 std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
-                                 const SurfaceProjector& surface);
+                                 const SurfaceProjector& surface,
+                                 ObtuseCorners which = ObtuseCorners::at_boundary);
 
 }  // namespace cvtmesh

@@ -9,6 +9,9 @@
 
 namespace cvtmesh {
 
+// The quality promise's bar (issue 18 item 6): θmin 30° and Q 0.6, away from narrow input angles.
+inline constexpr double kBarAngleDeg = 30, kBarQuality = 0.6;
+
 struct WorstShape {
   double quality = 1;
   double angle = 1;

@@ -127,8 +127,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
         r.flat_ears_removed);
   if (r.obtuse_corners_split > 0)
     text += fmt::format(
-        "  boundary  {} obtuse corners split (a triangle over 100° at a boundary vertex: the edge "
-        "across from it halved)\n",
+        "  shapes    {} obtuse corners split (a triangle over 100° at a boundary vertex, or under "
+        "Q 0.6 anywhere: the edge across from it halved)\n",
         r.obtuse_corners_split);
   if (r.mend_rounds > 0 || r.links_flipped > 0 || r.tips_closed > 0)
     text += fmt::format(
