@@ -291,7 +291,7 @@ void add_remesh(py::module_& m) {
         py::arg("threads") = 0, py::arg("progress") = nullptr);
   m.def("keep_freed_memory", &keep_freed_memory,
         R"(Make this process's allocator keep freed memory for reuse (glibc's mallopt): remeshes
-14-20% faster, peak memory 1-10% higher, for every later allocation of the process. The cvtmesh
+12-14% faster at the median, peak memory at most 10% higher, for every later allocation of the process. The cvtmesh
 program and cvtmesh.batch's workers call it; import cvtmesh does not.)");
 }
 
