@@ -11,8 +11,17 @@
 
 namespace {
 
+// The sanitizers bring their own allocator: GCC says so by macros, Clang by __has_feature.
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kSanitized = true;  // the sanitizers bring their own allocator
+#define CVTMESH_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer)
+#define CVTMESH_SANITIZED 1
+#endif
+#endif
+#if defined(CVTMESH_SANITIZED)
+constexpr bool kSanitized = true;
 #else
 constexpr bool kSanitized = false;
 #endif
