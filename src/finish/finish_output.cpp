@@ -121,14 +121,13 @@ bool shaped_better(const TriangleMesh& a, const TriangleMesh& b) {
   return under_a < under_b || (under_a == under_b && worst_a > worst_b);
 }
 
-// Whether `a`'s worst triangle is better than `b`'s, or as good with fewer triangles under the
-// bar: the order of the quality promise, which the worst triangle keeps or breaks. (Fewer under
-// the bar first let man.off at 1k, --seed 2, fall from 30.6° to 28.6°; both at once, fewer and
-// a better worst, kept it from 20.1° → 34.9° adaptive at 2k.)
-bool worst_shaped_better(const TriangleMesh& a, const TriangleMesh& b) {
-  const auto [under_a, worst_a] = bar_shapes(a);
-  const auto [under_b, worst_b] = bar_shapes(b);
-  return worst_a > worst_b || (worst_a == worst_b && under_a < under_b);
+// Whether shapes `a` (bar_shapes) have a better worst triangle than `b`, or as good with fewer
+// triangles under the bar: the order of the quality promise, which the worst triangle keeps or
+// breaks. (Fewer under the bar first let man.off at 1k, --seed 2, fall from 30.6° to 28.6°; both
+// at once, fewer and a better worst, kept it from 20.1° → 34.9° adaptive at 2k.)
+bool worst_shaped_better(const std::pair<std::size_t, double>& a,
+                         const std::pair<std::size_t, double>& b) {
+  return a.second > b.second || (a.second == b.second && a.first < b.first);
 }
 
 // Per vertex, the input angle under 30° of a tip the output traces there (else 0): a vertex within
@@ -236,6 +235,7 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   // among smaller cells, where the sizes grade down to a hole): the edge across from the obtuse
   // angle halved, then swept again (all over the mesh the first time, for whatever the first sweeps
   // left, halved or not), and kept where that makes the worst triangle better.
+  auto kept_shapes = bar_shapes(result.mesh);
   for (int round = 0; round < kHalvingRounds; ++round) {
     TriangleMesh halved = result.mesh;
     const std::size_t added =
@@ -251,7 +251,9 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                                   : around_new_vertices(halved, result.mesh.vertices.size()));
     const std::size_t removed =
         remove_valence_three(halved, removable_in(halved_supports), projector);
-    if (!worst_shaped_better(halved, result.mesh)) break;
+    const auto halved_shapes = bar_shapes(halved);
+    if (!worst_shaped_better(halved_shapes, kept_shapes)) break;
+    kept_shapes = halved_shapes;
     result.mesh = std::move(halved);
     result.feature_edges = std::move(halved_features);
     supports = std::move(halved_supports);

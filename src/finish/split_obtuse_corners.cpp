@@ -38,10 +38,12 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
     if (j - i == 2) other[i] = i + 1, other[i + 1] = i;
     i = j;
   }
-  // The obtuse corners to split, as the use of the edge across from each and its triangle's Q.
+  // The obtuse corners to split: triangle t = (a, b, c) with the obtuse angle at c, u = (b, a, d)
+  // across edge a-b, and t's Q.
   struct Candidate {
     double quality;
-    std::size_t use;
+    std::size_t t, u;
+    Index a, b, c, d;
   };
   std::vector<Candidate> candidates;
   for (std::size_t i = 0; i < uses.size(); ++i) {
@@ -49,16 +51,18 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
       continue;
     const std::size_t t = uses[i].triangle(), u = uses[other[i]].triangle();
     if (t == u) continue;
-    // t = (a, b, c) from its use of edge a -> b; u must run b -> a, with d across.
+    // t from its use of edge a -> b; u must run b -> a.
     const Triangle ft = mesh.triangles[t], fu = mesh.triangles[u];
     const std::size_t k = uses[i].corner % 3, l = uses[other[i]].corner % 3;
     const Index a = ft[k], b = ft[(k + 1) % 3], c = ft[(k + 2) % 3];
-    if (fu[l] != b || fu[(l + 1) % 3] != a || fu[(l + 2) % 3] == c) continue;
+    const Index d = fu[(l + 2) % 3];
+    if (fu[l] != b || fu[(l + 1) % 3] != a || d == c) continue;
+    if (which == ObtuseCorners::at_boundary && !boundary[c]) continue;
     const Vec3& p = mesh.vertices[c];
     const double quality = min_shape(p, mesh.vertices[a], mesh.vertices[b]).quality;
-    if (which == ObtuseCorners::at_boundary ? !boundary[c] : !(quality < kBarQuality)) continue;
+    if (which == ObtuseCorners::under_bar && !(quality < kBarQuality)) continue;
     if (angle_deg(mesh.vertices[a] - p, mesh.vertices[b] - p) > kObtuseDeg)
-      candidates.push_back({quality, i});
+      candidates.push_back({quality, t, u, a, b, c, d});
   }
   std::size_t cap = candidates.size();
   if (which == ObtuseCorners::under_bar) {
@@ -69,15 +73,9 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
   }
   std::vector<bool> split(mesh.triangles.size(), false);
   std::size_t added = 0;
-  for (const Candidate& candidate : candidates) {
+  for (const auto& [quality, t, u, a, b, c, d] : candidates) {
     if (added == cap) break;
-    const std::size_t i = candidate.use;
-    const std::size_t t = uses[i].triangle(), u = uses[other[i]].triangle();
     if (split[t] || split[u]) continue;
-    const Triangle ft = mesh.triangles[t], fu = mesh.triangles[u];
-    const std::size_t k = uses[i].corner % 3, l = uses[other[i]].corner % 3;
-    const Index a = ft[k], b = ft[(k + 1) % 3], c = ft[(k + 2) % 3];
-    const Index d = fu[(l + 2) % 3];
     // The midpoint's foot, unless the nearest surface lies farther than a quarter of the edge:
     // another sheet of a thin part, which the new triangles would reach across.
     const Vec3 middle = 0.5 * (mesh.vertices[a] + mesh.vertices[b]);
