@@ -29,11 +29,11 @@ bool Interrupt::out_of_time() const {
 }
 
 void InterruptSink::begin(std::size_t chunks) {
-  counts_.assign(chunks, 0);
+  counts_.assign(chunks, {});
 }
 
 void InterruptSink::polygon(std::size_t chunk, const RvdPolygon&) {
-  if (counts_[chunk]++ % kPolygonsPerCheck == 0) interrupt_.check();
+  if (counts_[chunk].seen++ % kPolygonsPerCheck == 0) interrupt_.check();
 }
 
 }  // namespace cvtmesh

@@ -43,7 +43,13 @@ class InterruptSink : public PolygonSink {
 
  private:
   const Interrupt& interrupt_;
-  std::vector<unsigned> counts_;  // polygons seen per chunk (a chunk runs on one thread)
+  // Polygons seen per chunk (a chunk runs on one thread), a cache line each: every polygon
+  // writes its chunk's count, and counts packed side by side kept one line going back and
+  // forth between the cores (3% of fandisk.off's remesh to 5k on two threads, 0.04% on one).
+  struct alignas(64) Count {
+    unsigned seen = 0;
+  };
+  std::vector<Count> counts_;
 };
 
 }  // namespace cvtmesh
