@@ -245,9 +245,10 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     };
     // One round of snapping: a second one, where the first left a stray, snapped 1-3 seeds for
     // 20 more iterations (65 in all on fandisk.off at 5k); without it, on the 56 shared meshes at
-    // 1k, 5k and 10k (seeds 1 and 2), the 10-13 runs that had one took 31% fewer evaluations, with
-    // the quality bar met as often (θmin away from narrow angles 0.9° higher on average with seed
-    // 1, 0.6° lower with seed 2; θmin_ave 0.2-0.3° lower).
+    // 1k, 5k and 10k (seeds 1 and 2), the 10-13 runs that had one took 31% fewer evaluations, the
+    // quality bar missed on 10 and 11 runs in all where it was on 11 and 11 (θmin away from narrow
+    // angles 0.9° higher on average over those runs with seed 1, 0.6° lower with seed 2;
+    // θmin_ave 0.2-0.3° lower).
     if (!constraints.empty() && !interrupt.timed_out()) even_curve_seeds();
     if (!constraints.empty() && !interrupt.timed_out() &&
         snap_stray_seeds(seeds, constraints, *curves, *curve_spacing) > 0) {
