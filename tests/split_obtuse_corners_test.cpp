@@ -11,9 +11,12 @@
 #include "finish/split_obtuse_corners.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
+#include "support/shapes.hpp"
 
 namespace cvtmesh {
 namespace {
+
+using namespace cvtmesh::testing;
 
 // A flat strip of two triangles: the ear (c, a, b) with an angle of `deg` at the boundary corner
 // c, and (b, a, d) across its edge a-b.
@@ -80,8 +83,7 @@ TriangleMesh inner_corner(double deg, double x = 0) {
   m.triangles.push_back({2, 4, 0});
   m.triangles.push_back({2, 5, 4});
   m.triangles.push_back({2, 1, 5});
-  for (Vec3& p : m.vertices) p.x += x;
-  return m;
+  return transformed(m, 1, {x, 0, 0});
 }
 
 TEST(SplitObtuseCorners, UnderTheBarAnInnerObtuseCornerIsSplitToo) {
@@ -103,13 +105,7 @@ TEST(SplitObtuseCorners, UnderTheBarAnInnerObtuseCornerIsSplitToo) {
 
 TEST(SplitObtuseCorners, UnderTheBarTheWorstIsSplitFirstAndOnePerHundredVertices) {
   // Two fans apart, 12 vertices: one split; the 124° corner's, not the 114° one's.
-  TriangleMesh m = inner_corner(114);
-  const TriangleMesh worse = inner_corner(124, 10);
-  for (Triangle t : worse.triangles) {
-    for (Index& v : t) v += static_cast<Index>(m.vertices.size());
-    m.triangles.push_back(t);
-  }
-  m.vertices.insert(m.vertices.end(), worse.vertices.begin(), worse.vertices.end());
+  TriangleMesh m = concatenate(inner_corner(114), inner_corner(124, 10));
   EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar), 1u);
   EXPECT_EQ(m.vertices.back(), (Vec3{10, 0, 0}));
 }

@@ -59,10 +59,11 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
     if (fu[l] != b || fu[(l + 1) % 3] != a || d == c) continue;
     if (which == ObtuseCorners::at_boundary && !boundary[c]) continue;
     const Vec3& p = mesh.vertices[c];
+    if (!(angle_deg(mesh.vertices[a] - p, mesh.vertices[b] - p) > kObtuseDeg)) continue;
+    // Q only for obtuse corners: each triangle comes up once per edge, and few are obtuse.
     const double quality = min_shape(p, mesh.vertices[a], mesh.vertices[b]).quality;
     if (which == ObtuseCorners::under_bar && !(quality < kBarQuality)) continue;
-    if (angle_deg(mesh.vertices[a] - p, mesh.vertices[b] - p) > kObtuseDeg)
-      candidates.push_back({quality, t, u, a, b, c, d});
+    candidates.push_back({quality, t, u, a, b, c, d});
   }
   std::size_t cap = candidates.size();
   if (which == ObtuseCorners::under_bar) {
