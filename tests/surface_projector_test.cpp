@@ -1,6 +1,6 @@
 // The nearest surface points that CCVT, shape improvement, the fit and the Hausdorff report
 // project onto: the nearest of all triangles, from any hint, on fine and coarse surfaces and
-// between two sheets close together.
+// between two sheets close together; and where a line meets the surface (the fit).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -87,18 +87,50 @@ TEST(SurfaceProjector, FindsTheNearestPointOfACoarseSurface) {
   expect_nearest(box, points_around(box, 0.5, 400));
 }
 
-TEST(SurfaceProjector, TellsTwoSheetsCloseTogetherApart) {
-  // Two unit squares 1e-3 apart, the points between and around them.
+// Two unit squares, at z = 0 and z = 1e-3.
+TriangleMesh two_sheets() {
   TriangleMesh sheets;
   for (const double z : {0.0, 1e-3}) {
     const auto base = static_cast<Index>(sheets.vertices.size());
     sheets.vertices.insert(sheets.vertices.end(), {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}});
     add_quad(sheets, base, base + 1, base + 2, base + 3);
   }
+  return sheets;
+}
+
+TEST(SurfaceProjector, TellsTwoSheetsCloseTogetherApart) {
+  // The points between and around them.
+  const TriangleMesh sheets = two_sheets();
   std::vector<Vec3> points = points_around(sheets, 1e-3, 300);
   for (std::size_t k = 0; k < 100; ++k)
     points.push_back({0.01 * static_cast<double>(k), 0.5, 1e-3 * static_cast<double>(k % 5) / 4});
   expect_nearest(sheets, points);
+}
+
+// along: the crossing of the line nearest to the point, within reach, in either direction.
+TEST(SurfaceProjector, FindsTheSurfaceAlongALine) {
+  const TriangleMesh unit = transformed(cube(1), 0.5, {0.5, 0.5, 0.5});  // [0, 1]^3
+  const SurfaceProjector box(unit);
+  const Vec3 up{0, 0, 1};
+  // Inside, 0.1 below the top face and 0.9 above the bottom one: up to the top.
+  EXPECT_NEAR(box.along({0.3, 0.4, 0.9}, up, 0.5).value(), 0.1, 1e-12);
+  // Outside, above the top: down to it, a negative step along `up`.
+  EXPECT_NEAR(box.along({0.3, 0.4, 1.2}, up, 0.5).value(), -0.2, 1e-12);
+  // Out of reach both ways, or parallel to the faces it runs between: none.
+  EXPECT_FALSE(box.along({0.3, 0.4, 0.5}, up, 0.4).has_value());
+  EXPECT_FALSE(box.along({0.3, 0.4, 0.5}, (1 / std::sqrt(2.0)) * Vec3{1, 1, 0}, 0.2).has_value());
+  // Slanted towards a corner: out through the face y = 1 (0.05 away in y; x and z are 0.1 and 0.2
+  // from theirs), the way back out of reach.
+  const Vec3 p{0.9, 0.95, 0.8}, d = (1 / std::sqrt(3.0)) * Vec3{1, 1, 1};
+  const double t = box.along(p, d, 1).value();
+  EXPECT_NEAR(distance_to_mesh(unit, p + t * d), 0, 1e-12);
+  EXPECT_NEAR(t, 0.05 * std::sqrt(3.0), 1e-12);
+}
+
+TEST(SurfaceProjector, AlongALineTakesTheNearerOfTwoSheets) {
+  const SurfaceProjector surface(two_sheets());
+  EXPECT_NEAR(surface.along({0.5, 0.5, 0.3e-3}, {0, 0, 1}, 1).value(), -0.3e-3, 1e-15);
+  EXPECT_NEAR(surface.along({0.5, 0.5, 0.7e-3}, {0, 0, 1}, 1).value(), 0.3e-3, 1e-15);
 }
 
 }  // namespace

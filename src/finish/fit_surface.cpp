@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "features/edge_uses.hpp"
 #include "geometry/surface_projector.hpp"
@@ -19,6 +20,8 @@ namespace {
 // an edge where the curvature radius is the edge length, and a larger move could reach across a
 // part thinner than that.
 constexpr double kMaxMove = 0.1;
+// How far the surface is looked for along a sample's normal, in the vertex's shortest edges.
+constexpr double kRayReach = 0.25;
 // A triangle may turn this far at most (cosine): a fit shifts, it does not fold.
 constexpr double kMinTurnCos = 0.906;  // 25°
 
@@ -69,25 +72,47 @@ std::vector<Vec3> vertex_normals(const TriangleMesh& mesh) {
 }
 
 // Per vertex, the weighted mean distance along its normal from its triangles' sample points to
-// their nearest surface points (0 where the vertex is not movable).
+// the surface (0 where the vertex is not movable). Each sample's distance is taken along its own
+// normal (the mean of its vertices'), to the nearest crossing within `reach_of` (per vertex,
+// kRayReach of its shortest edge), as geogram's mesh_adjust_surface takes its targets: that is
+// the distance a move along the normal changes, which the nearest point's normal component gives
+// only where the surface there is parallel to the sample's triangle. Where the line meets no
+// surface within reach, the nearest point serves. (56 shared meshes at 1k/5k/10k against the
+// nearest points: Hausdorff mean lower on 114 of 168 runs and higher on 48, 1.5% lower on
+// average; max lower on 128 and higher on 22; θmin and Qmin as before; time within the noise.)
 std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
                                  const SurfaceProjector& surface, const std::vector<bool>& movable,
-                                 const std::vector<Vec3>& normal) {
+                                 const std::vector<Vec3>& normal,
+                                 const std::vector<double>& reach_of) {
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   const auto& x = mesh.vertices;
   std::vector<SurfaceProjector::Foot> foot(nv);
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { foot[v] = surface.nearest(x[v]); });
-  // From each edge midpoint and centroid to its nearest surface point.
-  std::vector<Vec3> to_midpoint(edges.ends.size()), to_centroid(nt);
+  // From p to the surface: along n, else to the nearest point (searched from `hint`).
+  const auto to_surface = [&](const Vec3& p, const Vec3& n, double reach,
+                              const SurfaceProjector::Foot& hint) {
+    if (std::isfinite(reach) && n != Vec3{0, 0, 0})
+      if (const std::optional<double> t = surface.along(p, n, reach)) return *t * n;
+    return surface.nearest(p, hint).point - p;
+  };
+  // From each vertex, edge midpoint and centroid to the surface.
+  std::vector<Vec3> to_vertex(nv), to_midpoint(edges.ends.size()), to_centroid(nt);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
+    to_vertex[v] = to_surface(x[v], normal[v], reach_of[v], foot[v]);
+  });
   tbb::parallel_for(std::size_t{0}, edges.ends.size(), [&](std::size_t e) {
     const auto [a, b] = edges.ends[e];
     const Vec3 p = 0.5 * (x[a] + x[b]);
-    to_midpoint[e] = surface.nearest(p, foot[a]).point - p;
+    const Vec3 n = unit(normal[a] + normal[b]);
+    to_midpoint[e] = to_surface(p, n, std::max(reach_of[a], reach_of[b]), foot[a]);
   });
   tbb::parallel_for(std::size_t{0}, nt, [&](std::size_t t) {
     const auto c = mesh.corners(t);
     const Vec3 p = (1.0 / 3) * (c[0] + c[1] + c[2]);
-    to_centroid[t] = surface.nearest(p, foot[mesh.triangles[t][0]]).point - p;
+    const Triangle& f = mesh.triangles[t];
+    const Vec3 n = unit(normal[f[0]] + normal[f[1]] + normal[f[2]]);
+    to_centroid[t] =
+        to_surface(p, n, std::max({reach_of[f[0]], reach_of[f[1]], reach_of[f[2]]}), foot[f[0]]);
   });
   std::vector<double> sum(nv, 0), weight(nv, 0);
   for (std::size_t t = 0; t < nt; ++t) {  // in order: the sums do not depend on the threads
@@ -101,7 +126,7 @@ std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
       // the centroid (1/3).
       const Vec3& n = normal[v];
       const std::size_t after = edges.side[t][i], before = edges.side[t][(i + 2) % 3];
-      sum[v] += area * (kCornerWeight * dot(foot[v].point - x[v], n) +
+      sum[v] += area * (kCornerWeight * dot(to_vertex[v], n) +
                         kMidpointWeight / 2 * dot(to_midpoint[after] + to_midpoint[before], n) +
                         kCentroidWeight / 3 * dot(to_centroid[t], n));
       weight[v] += area * (kCornerWeight + kMidpointWeight + kCentroidWeight / 3);
@@ -140,13 +165,18 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
     angle_floor = std::min(angle_floor, s.min_angle);
     q_floor = std::min(q_floor, s.quality);
   }
-  std::vector<double> reach(nv, std::numeric_limits<double>::infinity());
+  std::vector<double> shortest(nv, std::numeric_limits<double>::infinity());
   for (const Triangle& f : mesh.triangles)
     for (int i = 0; i < 3; ++i) {
       const double l = distance(mesh.vertices[f[i]], mesh.vertices[f[(i + 1) % 3]]);
-      reach[f[i]] = std::min(reach[f[i]], kMaxMove * l);
-      reach[f[(i + 1) % 3]] = std::min(reach[f[(i + 1) % 3]], kMaxMove * l);
+      shortest[f[i]] = std::min(shortest[f[i]], l);
+      shortest[f[(i + 1) % 3]] = std::min(shortest[f[(i + 1) % 3]], l);
     }
+  std::vector<double> reach(nv), ray_reach(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    reach[v] = kMaxMove * shortest[v];
+    ray_reach[v] = kRayReach * shortest[v];
+  }
   const std::vector<Vec3> start = mesh.vertices;
   for (int round = 0; round < rounds; ++round) {
     const std::vector<Vec3> normal = vertex_normals(mesh);
@@ -155,7 +185,8 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
       const auto [a, b, c] = mesh.corners(t);
       face_normal[t] = unit(cross(b - a, c - a));
     }
-    const std::vector<double> offset = mean_offsets(mesh, edges, surface, movable, normal);
+    const std::vector<double> offset =
+        mean_offsets(mesh, edges, surface, movable, normal, ray_reach);
     const std::vector<Vec3> before = mesh.vertices;
     for (std::size_t v = 0; v < nv; ++v) {
       if (!movable[v] || offset[v] == 0) continue;

@@ -6,7 +6,9 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
+#include <iterator>
 #include <optional>
+#include <vector>
 
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
@@ -179,6 +181,24 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint
                        tree_->normals, first);
   tree_->tree.traversal(Kernel::Point_3(p.x, p.y, p.z), search);
   return tree_->foot(search.nearest(), search.triangle());
+}
+
+std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& direction,
+                                              double reach) const {
+  if (!(reach > 0)) return std::nullopt;
+  const Vec3 a = p - reach * direction, b = p + reach * direction;
+  const Kernel::Segment_3 segment(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z));
+  using Hit = AabbTree::Intersection_and_primitive_id<Kernel::Segment_3>::Type;
+  std::vector<Hit> hits;
+  tree_->tree.all_intersections(segment, std::back_inserter(hits));
+  std::optional<double> nearest;
+  for (const Hit& hit : hits) {
+    const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
+    if (!point) continue;  // the segment lies in a triangle's plane: no crossing there
+    const double t = dot(vec(*point) - p, direction);
+    if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
+  }
+  return nearest;
 }
 
 std::size_t SurfaceProjector::surface_triangle(std::size_t triangle) const {

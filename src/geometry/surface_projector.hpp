@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "cvtmesh/mesh.hpp"
 
@@ -27,6 +28,9 @@ class SurfaceProjector {
   // The squared distance from p to one triangle (as numbered inside the projector): an upper
   // bound on the squared distance to the surface, far cheaper than a search.
   double squared_distance_to(const Vec3& p, std::size_t triangle) const;
+  // The signed distance t, |t| <= reach, of the surface point p + t·direction nearest to p along
+  // the line (direction a unit vector), if the line meets the surface within reach of p.
+  std::optional<double> along(const Vec3& p, const Vec3& direction, double reach) const;
   // A triangle's id in the surface given, from its id inside the projector.
   std::size_t surface_triangle(std::size_t triangle) const;
 
