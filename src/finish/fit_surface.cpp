@@ -73,46 +73,41 @@ std::vector<Vec3> vertex_normals(const TriangleMesh& mesh) {
 
 // Per vertex, the weighted mean distance along its normal from its triangles' sample points to
 // the surface (0 where the vertex is not movable). Each sample's distance is taken along its own
-// normal (the mean of its vertices'), to the nearest crossing within `reach_of` (per vertex,
-// kRayReach of its shortest edge), as geogram's mesh_adjust_surface takes its targets: that is
-// the distance a move along the normal changes, which the nearest point's normal component gives
-// only where the surface there is parallel to the sample's triangle. Where the line meets no
-// surface within reach, the nearest point serves. (56 shared meshes at 1k/5k/10k against the
-// nearest points: Hausdorff mean lower on 114 of 168 runs and higher on 48, 1.5% lower on
-// average; max lower on 128 and higher on 22; θmin and Qmin as before; time within the noise.)
+// normal (the mean of its vertices'), to the nearest crossing within kRayReach of its vertex's
+// `shortest` edge (the longest such reach of its vertices), as geogram's mesh_adjust_surface takes
+// its targets: that is the distance a move along the normal changes, which the nearest point's
+// normal component gives only where the surface there is parallel to the sample's triangle. Where
+// the line meets no surface within reach, the nearest point serves. (56 shared meshes at 1k/5k/10k
+// against the nearest points: Hausdorff mean lower on 114 of 168 runs and higher on 48, 1.5% lower
+// on average; max lower on 128 and higher on 22; θmin and Qmin as before; time within the noise.)
 std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
                                  const SurfaceProjector& surface, const std::vector<bool>& movable,
                                  const std::vector<Vec3>& normal,
-                                 const std::vector<double>& reach_of) {
+                                 const std::vector<double>& shortest) {
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   const auto& x = mesh.vertices;
-  std::vector<SurfaceProjector::Foot> foot(nv);
-  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) { foot[v] = surface.nearest(x[v]); });
-  // From p to the surface: along n, else to the nearest point (searched from `hint`).
-  const auto to_surface = [&](const Vec3& p, const Vec3& n, double reach,
-                              const SurfaceProjector::Foot& hint) {
-    if (std::isfinite(reach) && n != Vec3{0, 0, 0})
-      if (const std::optional<double> t = surface.along(p, n, reach)) return *t * n;
-    return surface.nearest(p, hint).point - p;
+  // From p to the surface: along n, within kRayReach of `length`, else to the nearest point.
+  const auto to_surface = [&](const Vec3& p, const Vec3& n, double length) {
+    if (const std::optional<double> t = surface.along(p, n, kRayReach * length)) return *t * n;
+    return surface.nearest(p).point - p;
   };
   // From each vertex, edge midpoint and centroid to the surface.
   std::vector<Vec3> to_vertex(nv), to_midpoint(edges.ends.size()), to_centroid(nt);
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
-    to_vertex[v] = to_surface(x[v], normal[v], reach_of[v], foot[v]);
+    to_vertex[v] = to_surface(x[v], normal[v], shortest[v]);
   });
   tbb::parallel_for(std::size_t{0}, edges.ends.size(), [&](std::size_t e) {
     const auto [a, b] = edges.ends[e];
     const Vec3 p = 0.5 * (x[a] + x[b]);
     const Vec3 n = unit(normal[a] + normal[b]);
-    to_midpoint[e] = to_surface(p, n, std::max(reach_of[a], reach_of[b]), foot[a]);
+    to_midpoint[e] = to_surface(p, n, std::max(shortest[a], shortest[b]));
   });
   tbb::parallel_for(std::size_t{0}, nt, [&](std::size_t t) {
     const auto c = mesh.corners(t);
     const Vec3 p = (1.0 / 3) * (c[0] + c[1] + c[2]);
     const Triangle& f = mesh.triangles[t];
     const Vec3 n = unit(normal[f[0]] + normal[f[1]] + normal[f[2]]);
-    to_centroid[t] =
-        to_surface(p, n, std::max({reach_of[f[0]], reach_of[f[1]], reach_of[f[2]]}), foot[f[0]]);
+    to_centroid[t] = to_surface(p, n, std::max({shortest[f[0]], shortest[f[1]], shortest[f[2]]}));
   });
   std::vector<double> sum(nv, 0), weight(nv, 0);
   for (std::size_t t = 0; t < nt; ++t) {  // in order: the sums do not depend on the threads
@@ -172,11 +167,6 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
       shortest[f[i]] = std::min(shortest[f[i]], l);
       shortest[f[(i + 1) % 3]] = std::min(shortest[f[(i + 1) % 3]], l);
     }
-  std::vector<double> reach(nv), ray_reach(nv);
-  for (std::size_t v = 0; v < nv; ++v) {
-    reach[v] = kMaxMove * shortest[v];
-    ray_reach[v] = kRayReach * shortest[v];
-  }
   const std::vector<Vec3> start = mesh.vertices;
   for (int round = 0; round < rounds; ++round) {
     const std::vector<Vec3> normal = vertex_normals(mesh);
@@ -186,7 +176,7 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
       face_normal[t] = unit(cross(b - a, c - a));
     }
     const std::vector<double> offset =
-        mean_offsets(mesh, edges, surface, movable, normal, ray_reach);
+        mean_offsets(mesh, edges, surface, movable, normal, shortest);
     const std::vector<Vec3> before = mesh.vertices;
     for (std::size_t v = 0; v < nv; ++v) {
       if (!movable[v] || offset[v] == 0) continue;
@@ -194,7 +184,8 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
       const Vec3 to = before[v] + offset[v] * normal[v];
       const Vec3 moved = to - start[v];
       const double length = norm(moved);
-      mesh.vertices[v] = length > reach[v] ? start[v] + (reach[v] / length) * moved : to;
+      const double reach = kMaxMove * shortest[v];
+      mesh.vertices[v] = length > reach ? start[v] + (reach / length) * moved : to;
     }
     // Undo the moves at triangles that got worse than the floors, until none does: undoing all
     // gives back the round's start, which passed.

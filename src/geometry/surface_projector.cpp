@@ -185,7 +185,8 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint
 
 std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& direction,
                                               double reach) const {
-  if (!(reach > 0)) return std::nullopt;
+  // No line (a zero direction), or nothing to search (an unused vertex's infinite reach).
+  if (!(reach > 0) || !std::isfinite(reach) || direction == Vec3{}) return std::nullopt;
   const Vec3 a = p - reach * direction, b = p + reach * direction;
   const Kernel::Segment_3 segment(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z));
   using Hit = AabbTree::Intersection_and_primitive_id<Kernel::Segment_3>::Type;

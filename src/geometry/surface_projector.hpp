@@ -29,7 +29,8 @@ class SurfaceProjector {
   // bound on the squared distance to the surface, far cheaper than a search.
   double squared_distance_to(const Vec3& p, std::size_t triangle) const;
   // The signed distance t, |t| <= reach, of the surface point p + t·direction nearest to p along
-  // the line (direction a unit vector), if the line meets the surface within reach of p.
+  // the line (direction a unit vector), if the line meets the surface within reach of p; none
+  // for a zero direction or a reach that is not positive and finite.
   std::optional<double> along(const Vec3& p, const Vec3& direction, double reach) const;
   // A triangle's id in the surface given, from its id inside the projector.
   std::size_t surface_triangle(std::size_t triangle) const;
