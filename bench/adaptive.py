@@ -24,18 +24,19 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from corpus import (  # noqa: E402
-    MESH_EXTS, add_common_arguments, fmt, print_header, run_cvtmesh, run_in_order, run_vorpalite)
+    MESH_EXTS, add_common_arguments, fmt, jobs_for, print_header, run_cvtmesh, run_in_order,
+    run_vorpalite)
 
 TOOLS = ("uniform", "adaptive", "vorpalite-g1")
 
 
 def job(args):
-    tool, exe, vorpalite, mesh, n, timeout, seed = args
+    tool, exe, vorpalite, mesh, n, timeout, seed, threads = args
     if tool == "vorpalite-g1":
-        r = run_vorpalite(exe, vorpalite, mesh, n, timeout, ["remesh:gradation=1"])
+        r = run_vorpalite(exe, vorpalite, mesh, n, timeout, ["remesh:gradation=1"], threads)
     else:
         extra = ["--seed", str(seed)] + (["--adaptive"] if tool == "adaptive" else [])
-        r = run_cvtmesh(exe, mesh, n, timeout, extra, True)
+        r = run_cvtmesh(exe, mesh, n, timeout, extra, True, threads)
     r["tool"] = tool
     return r
 
@@ -112,7 +113,8 @@ def main():
         meshes = [m for m in meshes if m.name in set(a.only.split(","))]
     vorpalite = data.parent / "tools" / "vorpalite-iso"
     tools = TOOLS if not a.no_vorpalite and os.access(vorpalite, os.X_OK) else TOOLS[:2]
-    tasks = [(t, exe, str(vorpalite), m, a.count, a.timeout, a.seed) for m in meshes for t in tools]
+    tasks = [(t, exe, str(vorpalite), m, a.count, a.timeout, a.seed, a.threads) for m in meshes
+             for t in tools]
 
     print_header(HEADER, a.markdown)
 
@@ -120,7 +122,7 @@ def main():
         row = cells(key[0], r)
         print("| " + " | ".join(row) + " |" if a.markdown else "  ".join(row))
 
-    results = run_in_order(job, tasks, lambda t: (t[3].name, t[0]), a.jobs, show)
+    results = run_in_order(job, tasks, lambda t: (t[3].name, t[0]), jobs_for(a), show)
     totals(results, [m.name for m in meshes])
 
 

@@ -8,7 +8,7 @@ triangles under 30°, Hausdorff mean and max (% of the bbox diagonal), feature d
 kept, wall time and peak memory. With ../shared/tools/vorpalite-iso present, vorpalite's row for
 the same input and count follows ours, measured by `cvtmesh quality --ref`.
 
-    bench/corpus.py [--counts 1000,5000,10000] [--jobs J] [--no-vorpalite] [--only NAME,...]
+    bench/corpus.py [--counts 1000,5000,10000] [--jobs J] [--threads T] [--no-vorpalite] [--only NAME,...]
                     [--build build] [--data DIR] [--timeout S] [--markdown] [--large]
                     [REMESH OPTIONS]
 
@@ -16,9 +16,11 @@ the same input and count follows ours, measured by `cvtmesh quality --ref`.
 order at 10k and 50k (issue 19: large inputs, and input order), written through the Python module
 (build/python; Debian's python3 with numpy).
 
-Runs are independent processes, J at a time (default: the core count), each single-threaded
-in cvtmesh (--threads 1) so that J runs do not fight over the cores; vorpalite likewise gets
-sys:max_threads=1. Times are wall seconds of the whole default command (cvtmesh's includes its
+Runs are independent processes. With --threads 1 (the default), J run at a time (default: the
+core count), each single-threaded (cvtmesh --threads 1, vorpalite sys:max_threads=1) so that J
+runs do not fight over the cores: the throughput of a batch. With --threads 0, each run is the
+default command of both tools, on all cores, one run at a time (J defaults to 1): the wall time a
+user waits for one mesh, as issue 19 compares them. Times are wall seconds of the whole default command (cvtmesh's includes its
 report); both outputs' Hausdorff distances are then measured by the same `cvtmesh quality --ref`.
 Peak memory is the process's maximum resident set (getrusage of the child). The totals include
 the time topology control adds to the rest of each remesh (its report's timings), median and
@@ -99,14 +101,20 @@ def against_input(exe, out, mesh):
             j.get("q_min_away"))
 
 
-def run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff):
+def thread_options(threads, flag):
+    """The command-line options that give a run `threads` threads (0: the tool's default, all
+    cores)."""
+    return [] if threads == 0 else flag(threads)
+
+
+def run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff, threads=1):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "out.off")
         # The timed run is the default command, its own report included; the distances in the
         # table are measured afterwards, densely and as for vorpalite's output.
         rc, stdout, stderr, wall, mem = run_measured(
-            [exe, "remesh", str(mesh), out, "--vertices", str(n), "--json", "--quiet",
-             "--threads", "1"] + extra, timeout)
+            [exe, "remesh", str(mesh), out, "--vertices", str(n), "--json", "--quiet"] +
+            thread_options(threads, lambda t: ["--threads", str(t)]) + extra, timeout)
         if rc != 0:
             return {"tool": "cvtmesh", "error": (stderr.strip().splitlines() or ["?"])[-1][:80],
                     "time": wall, "mem": mem}
@@ -129,11 +137,12 @@ def run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff):
         return row
 
 
-def run_vorpalite(exe, vorpalite, mesh, n, timeout, extra=()):
+def run_vorpalite(exe, vorpalite, mesh, n, timeout, extra=(), threads=1):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "out.obj")
         rc, _, stderr, wall, mem = run_measured(
-            [vorpalite, str(mesh), out, str(n), "sys:max_threads=1"] + list(extra), timeout)
+            [vorpalite, str(mesh), out, str(n)] +
+            thread_options(threads, lambda t: [f"sys:max_threads={t}"]) + list(extra), timeout)
         if rc != 0 or not os.path.exists(out):
             return {"tool": "vorpalite", "error": f"exit {rc}", "time": wall, "mem": mem}
         q = subprocess.run([exe, "quality", out, "--ref", str(mesh), "--json"],
@@ -165,10 +174,10 @@ def shuffled_copy(mesh, out_dir, build):
 
 
 def job(args):
-    kind, exe, vorpalite, mesh, n, timeout, extra, measure_hausdorff = args
+    kind, exe, vorpalite, mesh, n, timeout, extra, measure_hausdorff, threads = args
     if kind == "cvtmesh":
-        return run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff)
-    return run_vorpalite(exe, vorpalite, mesh, n, timeout)
+        return run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff, threads)
+    return run_vorpalite(exe, vorpalite, mesh, n, timeout, threads=threads)
 
 
 def fmt(v, spec):
@@ -195,7 +204,10 @@ def print_row(name, n, r, markdown):
 
 def add_common_arguments(p):
     """The options that this benchmark and adaptive.py share."""
-    p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    p.add_argument("--jobs", type=int, default=None,
+                   help="runs at a time (default: the core count over --threads; 1 with 0)")
+    p.add_argument("--threads", type=int, default=1,
+                   help="threads per run for both tools (0: their default, all cores)")
     p.add_argument("--build", default=str(ROOT / "build"))
     p.add_argument("--data", default=os.environ.get("CVTMESH_SHARED_DATA",
                                                     str(ROOT.parent / "shared" / "data")))
@@ -203,6 +215,15 @@ def add_common_arguments(p):
     p.add_argument("--only", default="", help="comma-separated file names to run")
     p.add_argument("--timeout", type=float, default=600)
     p.add_argument("--markdown", action="store_true")
+
+
+def jobs_for(a):
+    """Runs at a time: --jobs, or as many as the cores hold at --threads each."""
+    if a.jobs is not None:
+        return a.jobs
+    if a.threads < 0:
+        sys.exit("--threads must not be negative")
+    return 1 if a.threads == 0 else max(1, (os.cpu_count() or 1) // a.threads)
 
 
 def print_header(header, markdown):
@@ -273,12 +294,12 @@ def main():
     tasks = []
     for mesh, n in runs:
         # The guard checks validity only; the Hausdorff measurement would double its time.
-        task = (exe, str(vorpalite), mesh, n, a.timeout, extra, not a.require_valid)
+        task = (exe, str(vorpalite), mesh, n, a.timeout, extra, not a.require_valid, a.threads)
         tasks.append(("cvtmesh",) + task)
         if use_vorpalite:
             tasks.append(("vorpalite",) + task)
     print_header(HEADER, a.markdown)
-    results = run_in_order(job, tasks, lambda t: (t[3].name, t[4], t[0]), a.jobs,
+    results = run_in_order(job, tasks, lambda t: (t[3].name, t[4], t[0]), jobs_for(a),
                            lambda key, r: print_row(key[0], key[1], r, a.markdown))
 
     ours = [r for (_, _, tool), r in results.items() if tool == "cvtmesh"]
