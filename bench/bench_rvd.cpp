@@ -47,6 +47,11 @@
 //     (remembered_s: lists carried over, the triangles no new seed reaches replayed) against one
 //     made afresh (fresh_s); remembered_over_fresh and replayed_pct (issue 18: topology control
 //     works locally).
+//   BM_PolishCoarseFacets/N: polishing alone (one round of 5 local Lloyd steps around every
+//     defect, cvt/polish_defects) on a cube of 12 triangles, each thousands of cells wide: N
+//     converged seeds (a remesh's), one of every 1,000th triangle dragged towards another, against
+//     the same seeds on the cube cut into 27,648 triangles smaller than the cells: coarse_over_fine
+//     (issue 19 item 3: a facet costs what its cells cost), and the seeds each moved.
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
@@ -58,12 +63,15 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "cvt/polish_defects.hpp"
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/remesh.hpp"
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/spread_samples.hpp"
+#include "geometry/surface_projector.hpp"
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
 #include "voronoi/multi_nerve.hpp"
@@ -437,5 +445,53 @@ BENCHMARK(BM_ExtractionAfterSeedsAdded)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+void BM_PolishCoarseFacets(benchmark::State& state) {
+  const bool slivers = state.range(1) == 1;
+  const TriangleMesh coarse = slivers ? testing::cylinder(1, 128) : testing::cube(1);
+  const TriangleMesh fine = slivers ? testing::cylinder(64, 128) : testing::cube(48);
+  // Converged seeds (a remesh's output vertices, unpolished and unfitted), one of every 1,000th
+  // triangle dragged 80% of the way to a neighbour: a few dozen defects apart from each other.
+  RemeshSettings settings;
+  settings.vertices = static_cast<std::size_t>(state.range(0));
+  settings.features.sharp_edges = false;
+  settings.polish_rounds = settings.shape_sweeps = settings.fit_rounds = 0;
+  const TriangleMesh converged = remesh(coarse, settings).mesh;
+  std::vector<Vec3> seeds = converged.vertices;
+  for (std::size_t t = 0; t < converged.triangles.size(); t += 1000) {
+    const Triangle& f = converged.triangles[t];
+    seeds[f[0]] = seeds[f[0]] + 0.8 * (seeds[f[1]] - seeds[f[0]]);
+  }
+  // Polishing's time on `surface`; `moved`: the seeds it moved.
+  const auto polish = [&](const TriangleMesh& surface, std::size_t& moved) {
+    const SurfaceProjector projector(surface);
+    const CvtObjective placement(surface, &projector);
+    std::vector<Vec3> polished = seeds;
+    TraversalMemory memory;
+    const auto start = Clock::now();
+    extract_polished(surface, polished, placement, {1, 5}, memory);
+    const double s = seconds(start);
+    moved = 0;
+    for (std::size_t k = 0; k < seeds.size(); ++k) moved += polished[k] != seeds[k];
+    return s;
+  };
+  for (auto _ : state) {
+    std::size_t moved_coarse = 0, moved_fine = 0;
+    const double coarse_s = polish(coarse, moved_coarse);
+    const double fine_s = polish(fine, moved_fine);
+    state.SetIterationTime(coarse_s);
+    state.counters["coarse_s"] = coarse_s;
+    state.counters["fine_s"] = fine_s;
+    state.counters["coarse_over_fine"] = coarse_s / fine_s;
+    state.counters["moved_coarse"] = static_cast<double>(moved_coarse);
+    state.counters["moved_fine"] = static_cast<double>(moved_fine);
+  }
+}
+BENCHMARK(BM_PolishCoarseFacets)
+    ->Args({20'000, 0})
+    ->Args({20'000, 1})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <functional>
 #include <iterator>
+#include <map>
 
+#include "cvt/triangle_pieces.hpp"
+#include "geometry/even_spacing.hpp"
 #include "geometry/point_tree.hpp"
 #include "quality/min_shape.hpp"
 #include "voronoi/multi_nerve.hpp"
@@ -18,17 +21,28 @@ namespace {
 constexpr double kMinAngleDeg = 35;
 constexpr double kMinQuality = 0.65;
 
-// The input triangles each cell covers, as (seed, triangle) pairs.
+// The input triangles each cell covers, as (seed, triangle) pairs; and the ball around each
+// polygon on a triangle that `pieces` cuts.
 class CellCoverage : public PolygonSink {
  public:
-  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
+  explicit CellCoverage(const TrianglePieces& pieces) : pieces_(pieces) {}
+  void begin(std::size_t chunks) override {
+    chunks_.assign(chunks, {});
+    ball_chunks_.assign(chunks, {});
+  }
   void polygon(std::size_t chunk, const RvdPolygon& p) override {
     chunks_[chunk].push_back({p.seed, p.triangle});
+    if (!pieces_.cut(p.triangle)) return;
+    ball_chunks_[chunk].push_back(
+        {p.triangle, p.seed, ball_around(p.vertices, [](const RvdVertex& v) { return v.point; })});
   }
   void end() override {
     pairs_.clear();
     for (const auto& c : chunks_) pairs_.insert(pairs_.end(), c.begin(), c.end());
     chunks_.clear();
+    balls_.clear();
+    for (const auto& c : ball_chunks_) balls_.insert(balls_.end(), c.begin(), c.end());
+    ball_chunks_.clear();
   }
   // The triangles covered by any of `cells` (sorted), sorted and without repeats. One scan, only
   // in rounds that found defects: most extractions never ask.
@@ -40,10 +54,24 @@ class CellCoverage : public PolygonSink {
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
+  // Per cut triangle of `cells` (sorted), the balls around their polygons there.
+  std::map<Index, std::vector<Ball>> balls_of(const std::vector<Index>& cells) const {
+    std::map<Index, std::vector<Ball>> out;
+    for (const BallOn& b : balls_)
+      if (std::binary_search(cells.begin(), cells.end(), b.seed)) out[b.triangle].push_back(b.ball);
+    return out;
+  }
 
  private:
+  struct BallOn {
+    Index triangle, seed;
+    Ball ball;
+  };
+  const TrianglePieces& pieces_;
   std::vector<std::vector<std::pair<Index, Index>>> chunks_;
   std::vector<std::pair<Index, Index>> pairs_;
+  std::vector<std::vector<BallOn>> ball_chunks_;
+  std::vector<BallOn> balls_;
 };
 
 // Whether the triangle has a defective shape.
@@ -90,23 +118,36 @@ TriangleMesh among_seeds(const TriangleMesh& mesh, std::size_t n) {
   return out;
 }
 
-// The input triangles `ids` as a mesh of their own; `original`, if given, gets each of its
-// vertices' id in `surface`.
-TriangleMesh sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids,
-                         std::vector<Index>* original = nullptr) {
-  TriangleMesh sub;
+// Input triangles as a mesh of their own, with the density at its vertices (empty for ρ = 1).
+struct Patch {
+  TriangleMesh mesh;
+  std::vector<double> density;
+};
+
+// The input triangles `ids` as a patch; of those that `pieces` cuts, the pieces that the
+// polygons of `cells` (sorted) reach (coverage.balls_of). `rho`: the density per vertex of
+// `surface`, or null.
+Patch sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids,
+                  const std::vector<double>* rho, const TrianglePieces& pieces,
+                  const CellCoverage& coverage, const std::vector<Index>& cells) {
+  Patch sub;
   std::vector<Index> renumbered(surface.vertices.size(), kNoIndex);
+  const auto balls = coverage.balls_of(cells);
   for (Index t : ids) {
+    if (pieces.cut(t)) {
+      pieces.add_pieces(t, balls.at(t), rho, sub.mesh, sub.density);
+      continue;
+    }
     Triangle f = surface.triangles[t];
     for (Index& v : f) {
       if (renumbered[v] == kNoIndex) {
-        renumbered[v] = static_cast<Index>(sub.vertices.size());
-        sub.vertices.push_back(surface.vertices[v]);
-        if (original) original->push_back(v);
+        renumbered[v] = static_cast<Index>(sub.mesh.vertices.size());
+        sub.mesh.vertices.push_back(surface.vertices[v]);
+        if (rho) sub.density.push_back((*rho)[v]);
       }
       v = renumbered[v];
     }
-    sub.triangles.push_back(f);
+    sub.mesh.triangles.push_back(f);
   }
   return sub;
 }
@@ -233,10 +274,11 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
            });
   };
   std::vector<Index> moving;
+  const TrianglePieces pieces(surface, edge_length_for(surface_area(surface), seeds.size()));
   for (int round = 0;; ++round) {
     const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
     MultiNerveBuilder rdt(rvd);
-    CellCoverage coverage;
+    CellCoverage coverage(pieces);
     InterruptSink stop(objective.interrupt());
     PolygonSink* sinks[] = {&rdt, &coverage, &stop};
     rvd.traverse(sinks, memory);
@@ -265,14 +307,11 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     // One more ring of cells gives the moving cells room to shift within the patch, and one
     // more shapes the patch's cells.
     const std::vector<Index> margin = grown(moving, rdt_of_seeds);
-    std::vector<Index> original;
-    const TriangleMesh patch = sub_surface(surface, coverage.triangles_of(margin), &original);
-    std::vector<double> density;
-    if (const std::vector<double>* rho = objective.density())
-      for (const Index v : original) density.push_back((*rho)[v]);
+    const Patch patch = sub_surface(surface, coverage.triangles_of(margin), objective.density(),
+                                    pieces, coverage, margin);
     const std::vector<Vec3> fixed = seeds;
     const PointTree tree(fixed);
-    local_lloyd(patch, density, grown(margin, rdt_of_seeds), moving, seeds, objective,
+    local_lloyd(patch.mesh, patch.density, grown(margin, rdt_of_seeds), moving, seeds, objective,
                 settings.steps, tree, fixed);
   }
 }
