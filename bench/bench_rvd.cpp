@@ -47,11 +47,13 @@
 //     (remembered_s: lists carried over, the triangles no new seed reaches replayed) against one
 //     made afresh (fresh_s); remembered_over_fresh and replayed_pct (issue 18: topology control
 //     works locally).
-//   BM_PolishCoarseFacets/N: polishing alone (one round of 5 local Lloyd steps around every
-//     defect, cvt/polish_defects) on a cube of 12 triangles, each thousands of cells wide: N
-//     converged seeds (a remesh's), one of every 1,000th triangle dragged towards another, against
-//     the same seeds on the cube cut into 27,648 triangles smaller than the cells: coarse_over_fine
-//     (issue 19 item 3: a facet costs what its cells cost), and the seeds each moved.
+//   BM_PolishCoarseFacets/N/S: polishing alone (one round of 5 local Lloyd steps around every
+//     defect, cvt/polish_defects) on a coarse surface, each triangle many cells wide: S = 0 a cube
+//     of 12 triangles, S = 1 a 128-sided cylinder whose sides are 256 slivers 2 long and 0.05
+//     wide. N converged seeds (a remesh's), one of every 1,000th triangle dragged towards another,
+//     against the same seeds on the same surface cut into triangles smaller than the cells (the
+//     cube into 27,648, the cylinder's sides into 64 rings): coarse_over_fine (issue 19 item 3: a
+//     facet costs what its cells cost), and the seeds each moved.
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>

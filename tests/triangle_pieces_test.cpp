@@ -3,6 +3,7 @@
 // linear, and an RVD over the pieces has the cells of the RVD over the triangle.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "cvt/triangle_pieces.hpp"
@@ -52,6 +53,9 @@ TEST(TrianglePieces, CutsOnlyTrianglesLongerThanEightSpacings) {
   EXPECT_FALSE(pieces.cut(1));
   EXPECT_FALSE(TrianglePieces(m, 0.6).cut(0));  // 4.04 long: within 8 spacings of 0.6
   EXPECT_TRUE(TrianglePieces(m, 0.4).cut(0));
+  // No spacing to cut to (a surface without area, no seed): nothing is cut.
+  EXPECT_FALSE(TrianglePieces(m, 0.0).cut(0));
+  EXPECT_FALSE(TrianglePieces(m, std::numeric_limits<double>::infinity()).cut(0));
 }
 
 // Longest-edge bisection cuts a sliver across: pieces as long as allowed, not k² thinner slivers.

@@ -21,6 +21,8 @@ constexpr double kPieceLength = 4;
 
 TrianglePieces::TrianglePieces(const TriangleMesh& surface, double spacing)
     : surface_(surface), cut_(surface.triangles.size(), 0), piece_length_(kPieceLength * spacing) {
+  // No spacing (no area, no seed) cuts nothing: the pieces would never get short enough.
+  if (!(spacing > 0 && std::isfinite(spacing))) return;
   for (std::size_t t = 0; t < cut_.size(); ++t) {
     const auto [a, b, c] = surface.corners(t);
     cut_[t] = std::max({distance(a, b), distance(b, c), distance(c, a)}) > kCutAbove * spacing;
