@@ -120,7 +120,7 @@ TEST(TrianglePieces, PiecesABallReachesCoverTheTriangleInIt) {
     double u = unit(random), v = unit(random);
     if (u + v > 1) u = 1 - u, v = 1 - v;
     const Vec3 p = a + u * (b - a) + v * (c - a);
-    if (distance(p, ball.centre) > ball.radius) continue;
+    if (distance(p, ball.center) > ball.radius) continue;
     ++tried;
     bool covered = false;
     for (std::size_t t = 0; t < near.triangles.size() && !covered; ++t)

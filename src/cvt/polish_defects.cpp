@@ -10,6 +10,7 @@
 #include "geometry/point_tree.hpp"
 #include "quality/min_shape.hpp"
 #include "voronoi/multi_nerve.hpp"
+#include "voronoi/polygon_reach.hpp"
 
 namespace cvtmesh {
 
@@ -33,8 +34,7 @@ class CellCoverage : public PolygonSink {
   void polygon(std::size_t chunk, const RvdPolygon& p) override {
     chunks_[chunk].push_back({p.seed, p.triangle});
     if (!pieces_.cut(p.triangle)) return;
-    ball_chunks_[chunk].push_back(
-        {p.triangle, p.seed, ball_around(p.vertices, [](const RvdVertex& v) { return v.point; })});
+    ball_chunks_[chunk].push_back({p.triangle, p.seed, bounding_ball(p.vertices)});
   }
   void end() override {
     pairs_.clear();
@@ -124,15 +124,13 @@ struct Patch {
   std::vector<double> density;
 };
 
-// The input triangles `ids` as a patch; of those that `pieces` cuts, the pieces that the
-// polygons of `cells` (sorted) reach (coverage.balls_of). `rho`: the density per vertex of
-// `surface`, or null.
+// The input triangles `ids` as a patch; of those that `pieces` cuts, the pieces that `balls`
+// there reach (CellCoverage::balls_of). `rho`: the density per vertex of `surface`, or null.
 Patch sub_surface(const TriangleMesh& surface, const std::vector<Index>& ids,
                   const std::vector<double>* rho, const TrianglePieces& pieces,
-                  const CellCoverage& coverage, const std::vector<Index>& cells) {
+                  const std::map<Index, std::vector<Ball>>& balls) {
   Patch sub;
   std::vector<Index> renumbered(surface.vertices.size(), kNoIndex);
-  const auto balls = coverage.balls_of(cells);
   for (Index t : ids) {
     if (pieces.cut(t)) {
       pieces.add_pieces(t, balls.at(t), rho, sub.mesh, sub.density);
@@ -308,7 +306,7 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
     // more shapes the patch's cells.
     const std::vector<Index> margin = grown(moving, rdt_of_seeds);
     const Patch patch = sub_surface(surface, coverage.triangles_of(margin), objective.density(),
-                                    pieces, coverage, margin);
+                                    pieces, coverage.balls_of(margin));
     const std::vector<Vec3> fixed = seeds;
     const PointTree tree(fixed);
     local_lloyd(patch.mesh, patch.density, grown(margin, rdt_of_seeds), moving, seeds, objective,

@@ -50,10 +50,12 @@ void TrianglePieces::add_pieces(Index t, std::span<const Ball> balls,
   // them, not thinner slivers), down to pieces no longer than piece_length_; a part that meets
   // no ball is dropped whole. The midpoint of an edge is the same whichever side asks.
   const auto cut = [&](const auto& self, const std::array<Corner, 3>& c) -> void {
-    const Ball around = ball_around(c, [](const Corner& x) { return x.p; });
+    const Vec3 center = (1.0 / 3) * (c[0].p + c[1].p + c[2].p);
+    const double radius =
+        std::max({distance(c[0].p, center), distance(c[1].p, center), distance(c[2].p, center)});
     // Rounding: a part that only touches a ball goes in too.
     if (std::none_of(balls.begin(), balls.end(), [&](const Ball& ball) {
-          return distance(ball.centre, around.centre) <= (ball.radius + around.radius) * (1 + 1e-9);
+          return distance(ball.center, center) <= (ball.radius + radius) * (1 + 1e-9);
         }))
       return;
     int longest = 0;  // edge e joins corners e and e + 1

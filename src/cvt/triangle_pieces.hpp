@@ -6,30 +6,13 @@
 // all 10k seeds). Only the pieces that the local cells reach go into the patch.
 #pragma once
 
-#include <algorithm>
-#include <iterator>
 #include <span>
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
+#include "voronoi/polygon_reach.hpp"
 
 namespace cvtmesh {
-
-// A ball around a polygon: no point of the polygon is farther than `radius` from `centre`.
-struct Ball {
-  Vec3 centre;
-  double radius = 0;
-};
-
-// The ball around the points `point(x)` of `items`, centred at their mean.
-template <class Items, class Point>
-Ball ball_around(const Items& items, const Point& point) {
-  Vec3 sum{0, 0, 0};
-  for (const auto& x : items) sum += point(x);
-  Ball ball{(1.0 / static_cast<double>(std::size(items))) * sum, 0};
-  for (const auto& x : items) ball.radius = std::max(ball.radius, distance(point(x), ball.centre));
-  return ball;
-}
 
 class TrianglePieces {
  public:
@@ -39,7 +22,8 @@ class TrianglePieces {
 
   bool cut(Index t) const { return cut_[t] != 0; }
 
-  // Appends to `patch` the pieces of triangle t that meet one of `balls`, in t's orientation,
+  // Appends to `patch` the pieces of triangle t that meet one of `balls` (around the polygons of
+  // the cells that the pieces are for: bounding_ball), in t's orientation,
   // with new vertices; and, when `rho` (per vertex of the surface) is given, their density,
   // linear over t, to `density`.
   void add_pieces(Index t, std::span<const Ball> balls, const std::vector<double>* rho,

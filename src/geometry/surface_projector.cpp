@@ -5,8 +5,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <cmath>
-#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -190,15 +191,16 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
   const Vec3 a = p - reach * direction, b = p + reach * direction;
   const Kernel::Segment_3 segment(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z));
   using Hit = AabbTree::Intersection_and_primitive_id<Kernel::Segment_3>::Type;
-  std::vector<Hit> hits;
-  tree_->tree.all_intersections(segment, std::back_inserter(hits));
   std::optional<double> nearest;
-  for (const Hit& hit : hits) {
-    const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
-    if (!point) continue;  // the segment lies in a triangle's plane: no crossing there
-    const double t = dot(vec(*point) - p, direction);
-    if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
-  }
+  // Each crossing as the tree finds it, in its order (nothing stored: the fit asks for every
+  // vertex, edge midpoint and centroid, every round).
+  tree_->tree.all_intersections(
+      segment, boost::make_function_output_iterator([&](const Hit& hit) {
+        const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
+        if (!point) return;  // the segment lies in a triangle's plane: no crossing there
+        const double t = dot(vec(*point) - p, direction);
+        if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
+      }));
   return nearest;
 }
 

@@ -29,4 +29,18 @@ inline double squared_reach(const Vec3& seed, std::span<const RvdVertex> polygon
   return r * r * (1 + 1e-10);
 }
 
+// A ball around a polygon: centred at the mean of its vertices, reaching past every vertex's
+// exact position.
+struct Ball {
+  Vec3 center;
+  double radius;
+};
+
+inline Ball bounding_ball(std::span<const RvdVertex> polygon) {
+  Vec3 center{};
+  for (const RvdVertex& v : polygon) center = center + v.point;
+  center = (1.0 / static_cast<double>(polygon.size())) * center;
+  return {center, reach_from(center, polygon) * (1 + 1e-10)};
+}
+
 }  // namespace cvtmesh

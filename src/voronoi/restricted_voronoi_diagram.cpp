@@ -208,21 +208,8 @@ struct RestrictedVoronoiDiagram::Impl {
     }
   }
 
-  // A ball that contains the polygon: centred at its vertex average, radius rounded up past
-  // the vertices' errors.
-  struct Ball {
-    Vec3 center;
-    double radius;
-  };
-  static Ball bounding_ball(std::span<const RvdVertex> polygon) {
-    Vec3 center{};
-    for (const RvdVertex& v : polygon) center = center + v.point;
-    center = (1.0 / static_cast<double>(polygon.size())) * center;
-    return {center, reach_from(center, polygon) * (1 + 1e-10)};
-  }
-
-  // Whether the ball lies on x_i's side of bisector (i, j) with a margin far beyond rounding:
-  // then every polygon vertex in it does, and clipping by j would change nothing. A cheap
+  // Whether the ball (bounding_ball) lies on x_i's side of bisector (i, j) with a margin far beyond
+  // rounding: then every polygon vertex in it does, and clipping by j would change nothing. A cheap
   // test (one dot product) that spares the exact predicates most neighbours.
   static bool beyond_bisector(const Ball& ball, const Vec3& xi, const Vec3& xj) {
     const Vec3 J = xj - xi, C = ball.center - xi;
