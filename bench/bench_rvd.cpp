@@ -42,6 +42,11 @@
 //     level 5 (20,480 faces), 1 on ../shared/data/fandisk.off (12,946 faces). Timed as Google
 //     Benchmark times a loop (many iterations; compare runs by their min with repetitions),
 //     with counters polygons_per_pass and ns_per_polygon: the cost of the clipping core.
+//   BM_SeedOrder/N: N spread seeds (sample elimination, which returns them in Morton order) on
+//     icosphere level 6 (81,920 faces), in that order against the same seeds shuffled, on one
+//     thread: an RVD pass with integrals and an extraction, each with its build;
+//     pass_sorted_over_shuffled and extraction_sorted_over_shuffled (issue 19 item 1: sort the
+//     seeds too; every array indexed by seed is then read in runs).
 //   BM_ExtractionAfterSeedsAdded/N: that extraction again after 1% more seeds came in, as a round
 //     of topology control adds them: with the TraversalMemory of the extraction before
 //     (remembered_s: lists carried over, the triangles no new seed reaches replayed) against one
@@ -64,6 +69,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <random>
+#include <utility>
 
 #include "cvt/polish_defects.hpp"
 #include "cvtmesh/io.hpp"
@@ -408,6 +415,50 @@ BENCHMARK(BM_CvtPass)
     ->ComputeStatistics("min", [](const std::vector<double>& v) {
       return *std::min_element(v.begin(), v.end());
     });
+
+// One pass with integrals and one extraction of `seeds`, each with its diagram's build, on one
+// thread: their times.
+std::pair<double, double> pass_and_extraction(const TriangleMesh& mesh,
+                                              const std::vector<Vec3>& seeds) {
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  auto start = Clock::now();
+  {
+    const RestrictedVoronoiDiagram rvd(mesh, seeds);
+    CellIntegrator integrator(rvd);
+    rvd.traverse(integrator);
+    benchmark::DoNotOptimize(integrator.result().total_energy);
+  }
+  const double pass_s = seconds(start);
+  start = Clock::now();
+  const RestrictedVoronoiDiagram rvd(mesh, seeds);
+  MultiNerveBuilder rdt(rvd);
+  rvd.traverse(rdt);
+  benchmark::DoNotOptimize(rdt.result().triangles.size());
+  return {pass_s, seconds(start)};
+}
+
+void BM_SeedOrder(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(6);
+  const std::vector<Vec3> sorted =
+      spread_samples(mesh, static_cast<std::size_t>(state.range(0)), 1);
+  std::vector<Vec3> shuffled = sorted;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(1));
+  for (auto _ : state) {
+    const auto [sorted_pass, sorted_extraction] = pass_and_extraction(mesh, sorted);
+    const auto [shuffled_pass, shuffled_extraction] = pass_and_extraction(mesh, shuffled);
+    state.SetIterationTime(sorted_pass + sorted_extraction + shuffled_pass + shuffled_extraction);
+    state.counters["sorted_pass_s"] = sorted_pass;
+    state.counters["shuffled_pass_s"] = shuffled_pass;
+    state.counters["pass_sorted_over_shuffled"] = sorted_pass / shuffled_pass;
+    state.counters["extraction_sorted_over_shuffled"] = sorted_extraction / shuffled_extraction;
+  }
+}
+BENCHMARK(BM_SeedOrder)
+    ->Arg(10'000)
+    ->Arg(50'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 void BM_ExtractionAfterSeedsAdded(benchmark::State& state) {
   const TriangleMesh mesh = testing::icosphere(5);

@@ -12,6 +12,7 @@
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "geometry/area_sampler.hpp"
+#include "geometry/spatial_order.hpp"
 #include "geometry/spread_samples.hpp"
 #include "support/shapes.hpp"
 
@@ -123,6 +124,24 @@ TEST(SpreadSamples, FollowATargetLengthThatVaries) {
   std::vector<Vec3> drawn(n);
   for (std::size_t k = 0; k < n; ++k) drawn[k] = random(k);
   EXPECT_LT(closest_relative(drawn), 0.05);
+}
+
+// In Morton order, as the remesher's input triangles are, so that the RVD reads the arrays
+// indexed by seed in runs (issue 19 item 1); with a varying length too.
+TEST(SpreadSamples, ComeInSpatialOrder) {
+  const auto in_order = [](const std::vector<Vec3>& points) {
+    const std::vector<Index> order = spatial_order(points);
+    for (Index k = 0; k < order.size(); ++k)
+      if (order[k] != k) return false;
+    return true;
+  };
+  const TriangleMesh torus_mesh = torus(1.0, 0.3, 64, 24);
+  EXPECT_TRUE(in_order(spread_samples(torus_mesh, 3'000, 5)));
+  const std::vector<double> weights(torus_mesh.triangles.size(), 1.0);
+  EXPECT_TRUE(in_order(spread_samples(
+      torus_mesh, 3'000, 5, weights, [](std::size_t, const Vec3& p) { return 0.02 * (2 + p.x); })));
+  // Which the candidates' random order is not.
+  EXPECT_FALSE(in_order(sample_surface(torus_mesh, 3'000, 5)));
 }
 
 TEST(SpreadSamples, TinyAndHugeSurfacesAreSpreadAlike) {

@@ -11,6 +11,7 @@
 #include "geometry/area_sampler.hpp"
 #include "geometry/even_spacing.hpp"
 #include "geometry/point_tree.hpp"
+#include "geometry/spatial_order.hpp"
 #include "geometry/unit_scale.hpp"
 
 namespace cvtmesh {
@@ -121,10 +122,18 @@ std::vector<Vec3> eliminate(const std::vector<Vec3>& candidates, const std::vect
       if (heap.contains(j))
         heap.lower(j, weight(gone, j, distance(candidates[gone], candidates[j])));
   }
+  std::vector<Vec3> kept;
+  kept.reserve(count);
+  for (Index i = 0; i < candidates.size(); ++i)
+    if (heap.contains(i)) kept.push_back(candidates[i]);
+  // In Morton order (issue 19 item 1, "sort the seeds too"): the seeds' ids become those of the
+  // remesh's seeds, and every array indexed by them (positions, neighbour lists, the cells'
+  // integrals and pieces) is then read in runs as the RVD's spatially sorted triangles go by. In
+  // the candidates' random order, igea.ply at 50k took 1.21x the time (per evaluation 1.14x,
+  // extraction 1.47x).
   std::vector<Vec3> points;
   points.reserve(count);
-  for (Index i = 0; i < candidates.size(); ++i)
-    if (heap.contains(i)) points.push_back(candidates[i]);
+  for (const Index i : spatial_order(kept)) points.push_back(kept[i]);
   return points;
 }
 

@@ -14,8 +14,9 @@ namespace cvtmesh {
 
 // `count` points on the surface, about evenly spaced: Yuksel's sample elimination ("Sample
 // Elimination for Generating Poisson Disk Sample Sets", Eurographics 2015) from a few times as
-// many area-uniform random candidates. The same (mesh, count, seed) gives the same points on any
-// thread count. Throws InvalidArgument if the surface has no area.
+// many area-uniform random candidates, in Morton order (spatial_order). The same (mesh, count,
+// seed) gives the same points on any thread count. Throws InvalidArgument if the surface has no
+// area.
 std::vector<Vec3> spread_samples(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed);
 
 // The same with a spacing that varies (a sizing field, issue 20): candidates picked on triangle t
