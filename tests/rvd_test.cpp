@@ -533,6 +533,30 @@ TEST(Rvd, ANeighborCacheGivesTheSameDiagramAsAFreshSearch) {
   EXPECT_EQ(reused, 6);
 }
 
+// Exact predicates on exactly scaled inputs decide alike: the cells of a surface and seeds scaled
+// by 2^k have the same polygons, symbol for symbol, far beyond unit size (where squared and
+// fourth powers of the coordinates overflow or underflow, and filters must hand over to exact
+// arithmetic rather than decide on rounded nothings).
+TEST(Rvd, ScaledByAPowerOfTwoGivesTheSameCells) {
+  const TriangleMesh m = torus(1, 0.4, 24, 12);
+  const std::vector<Vec3> seeds = sample_surface(m, 150, 5);
+  const auto symbols = [](const TriangleMesh& mesh, const std::vector<Vec3>& at) {
+    PolygonRecord record;
+    const RestrictedVoronoiDiagram rvd(mesh, at);
+    rvd.traverse(record);
+    std::map<std::pair<Index, Index>, std::vector<std::array<std::int32_t, 2>>> out;
+    for (const auto& [key, vertices] : record.polygons)
+      for (const auto& v : vertices) out[key].push_back(std::get<0>(v));
+    return out;
+  };
+  const auto unit = symbols(m, seeds);
+  for (const int k : {-300, -250, -70, 70, 250, 300}) {
+    std::vector<Vec3> scaled_seeds;
+    for (const Vec3& p : seeds) scaled_seeds.push_back(scaled_by_power_of_two(p, k));
+    EXPECT_TRUE(symbols(scaled_by_power_of_two(m, k), scaled_seeds) == unit) << "2^" << k;
+  }
+}
+
 TEST(Rvd, ResultsDoNotDependOnThreadCount) {
   const TriangleMesh m = torus(1, 0.4, 120, 48);  // 11,520 triangles: many chunks
   const std::vector<Vec3> seeds = sample_surface(m, 2000, 9);

@@ -212,6 +212,17 @@ double quotient_error(double q, double N, double error_N, double D, double error
                     : std::numeric_limits<double>::infinity();
 }
 
+// Whether a sum of products of absolute values (aN, aD below) is small enough that a product in
+// it may have underflowed (under 2^-1022 a double keeps fewer digits): the bounds count relative
+// roundings only, and an underflow's absolute error, divided by a small denominator, may exceed
+// them by far. Such a vertex gets an infinite bound, so that every predicate on it goes to exact
+// arithmetic. 2^-800 leaves room for factors up to 2^200 after the smallest product. Reached only
+// far below unit size (the remesher works at unit size): the RVD of a surface scaled by 2^-250
+// had cells other than the unit surface's (Rvd.ScaledByAPowerOfTwoGivesTheSameCells).
+bool may_underflow(double magnitude_sum) {
+  return magnitude_sum != 0 && magnitude_sum < 0x1p-800;
+}
+
 // |a| × |b| with every minus a plus: a bound on the magnitude of each term of a cross product.
 Vec3 cross_of_magnitudes(const Vec3& a, const Vec3& b) {
   return {a.y * b.z + a.z * b.y, a.z * b.x + a.x * b.z, a.x * b.y + a.y * b.x};
@@ -250,6 +261,9 @@ void facet_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
     v.error = std::max(v.error, (error_q + u * std::abs(point[c])) * (1 + 4 * u));
   }
   v.point = {point[0], point[1], point[2]};
+  if (may_underflow(aN.x) || may_underflow(aN.y) || may_underflow(aN.z) ||
+      may_underflow(dot(ar0, a0)))
+    v.error = std::numeric_limits<double>::infinity();
 }
 
 // Position and error bound of a type B vertex, q1 + t (q2 − q1) with t = N/D, N = K·K − 2 Q1·K,
@@ -276,6 +290,8 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
   const double p_max = std::max({ap.x, ap.y, ap.z});
   v.error = (error_t * (1 + 2 * u) + 2.01 * u * std::abs(t)) * e_max + 1.01 * u * p_max +
             BoundedDouble::kTiny;
+  if (may_underflow(dot(aK, aK) + 2 * dot(aQ1, aK)) || may_underflow(2 * dot(ae, aK)))
+    v.error = std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
