@@ -219,10 +219,10 @@ def add_common_arguments(p):
 
 def jobs_for(a):
     """Runs at a time: --jobs, or as many as the cores hold at --threads each."""
-    if a.jobs is not None:
-        return a.jobs
     if a.threads < 0:
         sys.exit("--threads must not be negative")
+    if a.jobs is not None:
+        return a.jobs
     return 1 if a.threads == 0 else max(1, (os.cpu_count() or 1) // a.threads)
 
 

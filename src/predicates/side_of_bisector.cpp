@@ -251,7 +251,7 @@ void facet_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
              a2 = cross_of_magnitudes(ar0, ar1);
   const Vec3 N = dot(K, K) * c0 + dot(L, L) * c1 + dot(n, Q0) * c2;
   const Vec3 aN = dot(aK, aK) * a0 + dot(aL, aL) * a1 + dot(an, abs(Q0)) * a2;
-  const double D = dot(r0, c0), error_D = 12 * u * dot(ar0, a0);
+  const double D = dot(r0, c0), aD = dot(ar0, a0), error_D = 12 * u * aD;
   v.error = BoundedDouble::kTiny;
   std::array<double, 3> point{};
   for (int c = 0; c < 3; ++c) {
@@ -261,8 +261,7 @@ void facet_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
     v.error = std::max(v.error, (error_q + u * std::abs(point[c])) * (1 + 4 * u));
   }
   v.point = {point[0], point[1], point[2]};
-  if (may_underflow(aN.x) || may_underflow(aN.y) || may_underflow(aN.z) ||
-      may_underflow(dot(ar0, a0)))
+  if (may_underflow(aN.x) || may_underflow(aN.y) || may_underflow(aN.z) || may_underflow(aD))
     v.error = std::numeric_limits<double>::infinity();
 }
 
@@ -280,18 +279,19 @@ void edge_crossing(const ClipFrame& f, const Definition& def, RvdVertex& v) {
   const Vec3 K = f.seeds[def.k] - xi, Q1 = q1 - xi, e = f.corners[(def.edge + 1) % 3] - q1;
   const Vec3 aK = abs(K), aQ1 = abs(Q1), ae = abs(e);
   const double N = dot(K, K) - 2 * dot(Q1, K), D = 2 * dot(e, K);
-  const double error_N = 9 * u * (dot(aK, aK) + 2 * dot(aQ1, aK));
-  const double error_D = 6 * u * 2 * dot(ae, aK);
+  // N and D over absolute values: their rounding errors are bounded relative to these.
+  const double aN = dot(aK, aK) + 2 * dot(aQ1, aK), aD = 2 * dot(ae, aK);
+  const double error_N = 9 * u * aN, error_D = 6 * u * aD;
   const double t = N / D;
   const double error_t = quotient_error(t, N, error_N, D, error_D);
   v.point = q1 + t * e;
   const Vec3 ap = abs(v.point);
   const double e_max = std::max({ae.x, ae.y, ae.z});
   const double p_max = std::max({ap.x, ap.y, ap.z});
-  v.error = (error_t * (1 + 2 * u) + 2.01 * u * std::abs(t)) * e_max + 1.01 * u * p_max +
-            BoundedDouble::kTiny;
-  if (may_underflow(dot(aK, aK) + 2 * dot(aQ1, aK)) || may_underflow(2 * dot(ae, aK)))
-    v.error = std::numeric_limits<double>::infinity();
+  v.error = may_underflow(aN) || may_underflow(aD)
+                ? std::numeric_limits<double>::infinity()
+                : (error_t * (1 + 2 * u) + 2.01 * u * std::abs(t)) * e_max + 1.01 * u * p_max +
+                      BoundedDouble::kTiny;
 }
 
 }  // namespace
