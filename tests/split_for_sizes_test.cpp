@@ -132,6 +132,29 @@ TEST(SplitForSizes, ANeedleWithATinySizeAtItsApexIsSplitFewTimes) {
                     << split->halved.size() << " splits";
 }
 
+// Sizes that are not graded: a tiny one at the middle vertex beside the even ones, 0.1 away.
+// The midpoints are graded from the tiny end, so those by an even vertex stay under half its size
+// however close they come: halving towards it never ended (1,600 splits, the safety cap of 8 per
+// triangle, and edges of length 0). A triangle shorter than an eighth of its smallest size is
+// split no further.
+TEST(SplitForSizes, SizesThatAreNotGradedStopTheSplitsAtTheirOwnScale) {
+  const TriangleMesh m = mapped_grid(10, 10, [](double u, double v) { return Vec3{u, v, 0}; });
+  std::vector<double> sizes(m.vertices.size(), 0.2);
+  sizes[5 * 11 + 5] = 1e-3;
+  const std::optional<SplitForSizes> split = split_for_sizes(m, sizes, 2, 1.5);
+  ASSERT_TRUE(split);
+  EXPECT_LT(split->halved.size(), 4 * m.triangles.size());
+  const TriangleMesh& s = split->mesh;
+  double shortest = INFINITY;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    const auto [a, b, c] = s.corners(t);
+    shortest = std::min({shortest, distance(a, b), distance(b, c), distance(c, a)});
+  }
+  EXPECT_GT(shortest, 1e-3 / 8 / 4);  // the smallest size's eighth, halved at most twice more
+  EXPECT_NEAR(total_area(s), total_area(m), 1e-12);
+  EXPECT_TRUE(same_topology(analyze_topology(s), analyze_topology(m)));
+}
+
 TEST(SplitForSizes, FeatureCurvesGoThroughTheMidpointsOfTheirHalvedEdges) {
   const TriangleMesh m = plate_with_pinhole(6, 1e-3);
   std::vector<double> sizes(m.vertices.size(), 0.15);

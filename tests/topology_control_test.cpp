@@ -854,6 +854,27 @@ TEST(HardCases, ATinyComponentBesideALargeOne) {
   expect_valid_remesh(concatenate(icosphere(3), fan), 500);
 }
 
+// A scan with dropouts: a sphere with 40 holes of one input triangle each, apart from one
+// another, each about a third of an output edge across. Every hole stays one boundary loop.
+TEST(HardCases, ASphereWithManyHolesOfOneTriangle) {
+  TriangleMesh m = icosphere(4);
+  std::vector<bool> touched(m.vertices.size(), false);
+  std::vector<Triangle> kept;
+  std::size_t holes = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const Triangle& f = m.triangles[t];
+    if (holes < 40 && t % 97 == 0 && !touched[f[0]] && !touched[f[1]] && !touched[f[2]]) {
+      for (const Index v : f) touched[v] = true;
+      ++holes;
+    } else {
+      kept.push_back(f);
+    }
+  }
+  m.triangles = std::move(kept);
+  ASSERT_EQ(analyze_topology(m).boundary_loops, holes);
+  expect_valid_remesh(m, 500);
+}
+
 // A boundary that touches itself at a point, stored as two vertices there (beetle-alt.obj of a
 // public test set, outside the corpus, crashed at 1k: feature seeds were placed once per point,
 // so the corners after the pinch's second copy named other corners' seeds, and one past the end).

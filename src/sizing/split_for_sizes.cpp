@@ -51,10 +51,20 @@ std::optional<SplitForSizes> split_for_sizes(const TriangleMesh& mesh,
   std::vector<double>& size = out.sizes;
   size = sizes;
   std::vector<Triangle>& triangles = out.mesh.triangles;
+  // A triangle whose edges are all shorter than an eighth of its smallest size lies within one
+  // cell, which no split of it would make follow the sizes better. Where the sizes are not
+  // graded (a midpoint graded from the vertex across its edge may lie right by a vertex of a much
+  // larger size), halving towards that vertex would never bring the two within the ratio: the
+  // camel of the corpus with 166 one-triangle holes made 155,000 midpoints converge on one
+  // vertex, down to coincident corners, and its remesh at 9k took 7 minutes.
+  constexpr double kFinest = 0.125;
   const auto needs_split = [&](std::size_t t) {
     const Triangle& f = triangles[t];
     const auto [lo, hi] = std::minmax({size[f[0]], size[f[1]], size[f[2]]});
-    return hi > ratio * lo;
+    if (!(hi > ratio * lo)) return false;
+    const double reach = kFinest * lo;
+    const auto [a, b, c] = out.mesh.corners(t);
+    return std::max({distance(a, b), distance(b, c), distance(c, a)}) >= reach;
   };
   out.mesh = mesh;
   std::vector<std::size_t> queue;

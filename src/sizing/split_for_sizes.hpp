@@ -21,11 +21,12 @@ struct SplitForSizes {
 };
 
 // `mesh` with every edge whose two ends' `sizes` differ by more than `ratio` halved, again
-// and again, each triangle on it split in two (the mesh stays conforming and keeps its
-// orientation and topology); a midpoint's size is the mean of its ends', or, with `gradation`
-// > 0, the smaller of that and the smaller end's size plus half the edge's length over it (the
-// graded size there). Children keep their parent's place in the triangle order (which is
-// spatial). None when no edge needs it. `ratio` > 1; `sizes` > 0 on used vertices.
+// and again (down to an eighth of the smaller size, no further), each triangle on it split in two
+// (the mesh stays conforming and keeps its orientation and topology); a midpoint's size is the mean
+// of its ends', or, with `gradation` > 0, the smaller of that and the smaller end's size plus half
+// the edge's length over it (the graded size there). Children keep their parent's place in the
+// triangle order (which is spatial). None when no edge needs it. `ratio` > 1; `sizes` > 0 on used
+// vertices.
 std::optional<SplitForSizes> split_for_sizes(const TriangleMesh& mesh,
                                              const std::vector<double>& sizes, double ratio,
                                              double gradation);
