@@ -131,7 +131,7 @@ int run_remesh(RemeshOptions o) {
   if (r.count_grown > 0)
     fmt::print(stderr,
                "{}: warning: {} vertices more than asked for: fewer did not keep the input's "
-               "topology\n",
+               "topology, or left its boundary loops and creases too few\n",
                o.output, r.count_grown);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   return kOk;

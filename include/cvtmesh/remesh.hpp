@@ -124,7 +124,9 @@ struct RemeshResult {
   double gap_length_min = 0;
   // Vertices asked for on top of the count requested, where neither topology control nor
   // adaptive sizes kept the input's topology: the count doubled, at most twice (issue 18 item 2:
-  // the count grows for the topology alone). 0 when the count asked for sufficed.
+  // the count grows for the topology alone); or where the features (boundary loops, creases)
+  // needed more seeds of their own than the count left (many small holes, with sizes graded down
+  // to them): the count grew to twice their need. 0 when the count asked for sufficed.
   std::size_t count_grown = 0;
   // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had

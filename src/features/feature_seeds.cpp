@@ -111,10 +111,11 @@ SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh
   for (const Wanted& w : wanted) points.insert(w.point);
   const std::size_t distinct = points.size();
   if (distinct >= seeds.size())
-    throw InvalidArgument("the sharp features need " + std::to_string(distinct) +
-                          " vertices on their own, and the output has " +
-                          std::to_string(seeds.size()) +
-                          ": ask for more vertices, a larger feature angle, or no features");
+    throw FeaturesNeedMoreSeeds(
+        "the sharp features need " + std::to_string(distinct) +
+            " vertices on their own, and the output has " + std::to_string(seeds.size()) +
+            ": ask for more vertices, a larger feature angle, or no features",
+        distinct);
 
   SeedConstraints result;
   result.kind.assign(seeds.size(), SeedConstraints::Kind::surface);

@@ -3,13 +3,24 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "cvtmesh/errors.hpp"
 #include "features/curve_projector.hpp"
 #include "features/curve_spacing.hpp"
 
 namespace cvtmesh {
+
+// The features need `needed` seeds of their own, and the count leaves fewer: sizes graded down
+// to small holes put far more seeds on their loops than the even spacing that the count was
+// checked against (remesh/by_component).
+struct FeaturesNeedMoreSeeds : InvalidArgument {
+  FeaturesNeedMoreSeeds(const std::string& message, std::size_t needed_seeds)
+      : InvalidArgument(message), needed(needed_seeds) {}
+  std::size_t needed;
+};
 
 // What each seed is bound to during CCVT.
 struct SeedConstraints {
@@ -31,7 +42,7 @@ struct SeedConstraints {
 // Replaces seeds by feature seeds: each corner, and points about a spacing apart (as `spacing`
 // measures length) along each curve (at least three on a closed loop, two on a curve from a corner
 // back to itself, so no loop collapses), each taking the place of the nearest seed not taken yet.
-// The seed count stays the same. InvalidArgument when the features need more seeds than there are.
+// The seed count stays the same. FeaturesNeedMoreSeeds when they need more seeds than there are.
 SeedConstraints place_feature_seeds(std::vector<Vec3>& seeds, const TriangleMesh& mesh,
                                     const Features& features, const CurveProjector& curves,
                                     const CurveSpacing& spacing);

@@ -109,7 +109,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   if (r.count_grown > 0)
     text += fmt::format(
         "  sizing    {} vertices asked for on top of the count: fewer did not keep the input's "
-        "topology\n",
+        "topology, or left its boundary loops and creases too few\n",
         r.count_grown);
   text += fmt::format(
       "  sizing    edge length / target: median {:.3f}, 5th-95th percentile {:.3f}-{:.3f}\n",
