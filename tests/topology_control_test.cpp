@@ -1081,6 +1081,20 @@ TEST(HardCases, ATubeTooThinForTheCountAskedForGetsMoreVertices) {
   }
 }
 
+// Adaptive sizes grow with the count too: the same tube at 60, adaptive, kept its genus only once
+// the count doubled (it stayed lost before, the growth being for even sizes alone).
+TEST(HardCases, ATubeTooThinForTheCountGetsMoreVerticesWithAdaptiveSizesToo) {
+  const TriangleMesh ring = torus(1.0, 0.03, 400, 12);
+  RemeshSettings s;
+  s.vertices = 60;
+  s.sizing.adaptive = 1.5;
+  s.hausdorff.reset();
+  const RemeshResult r = remesh(ring, s);
+  expect_topology_kept(r, ring);
+  EXPECT_GT(r.count_grown, 0u);
+  EXPECT_GE(r.mesh.vertices.size(), 60 + r.count_grown);
+}
+
 // Thinner still (0.06 around against 0.1), the cells wrap around the tube at 4 times the count
 // too, and meet in no triangle: an error that says so, not an empty output.
 TEST(HardCases, ATubeFarTooThinForTheCountAskedForIsAnError) {

@@ -149,25 +149,34 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   // length, holes and gaps narrower than it, get cells their size from the start with the
   // local feature size (issue 20), where topology control's seeds come too late or too few
   // (tower_holes.obj at 1k: a 3-vertex hole 0.17 edge lengths across, 0.1 from a window).
-  // Not for the caller's own sizes or seeds, not with topology control off, not where the time
-  // is up, and not on an input with edges of three triangles or more, whose junctions no count
-  // resolves (truck.obj of libigl's tutorial data, 50 parts with 54 such edges, at 5k: 133 s
-  // with them, 43 s without, 30 s before either; 55, 55 and 56 parts out).
-  if (topology_kept(best.result) > 0 || best.result.time_limit_reached || used.sizing.active() ||
+  // Not for the caller's own sizes (nor the count's growth below) or seeds, not with topology
+  // control off, not where the time is up, and not on an input with edges of three triangles or
+  // more, whose junctions no count resolves (truck.obj of libigl's tutorial data, 50 parts with
+  // 54 such edges, at 5k: 133 s with them, 43 s without, 30 s before either; 55, 55 and 56
+  // parts out).
+  if (topology_kept(best.result) > 0 || best.result.time_limit_reached ||
       !used.initial_seeds.empty() || used.topology_rounds == 0 ||
       best.result.input_topology.nonmanifold_edges > 0)
     return best;
-  RemeshSettings adapted = used;
-  adapted.sizing.adaptive = kFallbackGradation;
-  if (std::optional<UnitRemesh> third = retried(input, adapted, start)) {
-    third->result.sizes_adapted = true;
-    third->result.feature_edges_dropped = best.result.feature_edges_dropped;
-    take_better(best, std::move(*third));
+  if (!used.sizing.active()) {
+    RemeshSettings adapted = used;
+    adapted.sizing.adaptive = kFallbackGradation;
+    if (std::optional<UnitRemesh> third = retried(input, adapted, start)) {
+      third->result.sizes_adapted = true;
+      third->result.feature_edges_dropped = best.result.feature_edges_dropped;
+      take_better(best, std::move(*third));
+    }
   }
   // Last, the count grows, as the paper's rule lets it for the topology alone (§4.4, issue 18
   // item 2): where neither topology control's seeds nor the sizes kept it at the count asked
   // for (ADIS16480.STL of trimesh's test models, a CAD part of genus 24, at 1k; kept at 2k with
-  // 2,608 seeds added), the count doubles, and again.
+  // 2,608 seeds added), the count doubles, and again. Sizes scaled to a count (`--adaptive`, or
+  // the caller's lengths with a count) grow with it (femur.off with 1% of its triangles removed,
+  // adaptive at 300: 39 boundary loops out for 37 in); the caller's lengths without a count are
+  // the output's size, and stay.
+  if (used.sizing.active() && used.vertices == 0 && used.edge_length == 0 &&
+      used.edge_length_rel == 0)
+    return best;
   const std::size_t asked = unit_vertex_count(input, settings, nullptr);
   RemeshSettings more = used;
   more.edge_length = more.edge_length_rel = 0;
