@@ -91,8 +91,8 @@ bool take_better(UnitRemesh& best, UnitRemesh redo) {
 // The first remesh, with `settings` (updated to those used). Where the features need more seeds
 // than the count leaves, which the count was checked against at even spacing (remesh/by_component)
 // but sizes graded down to small holes put many more on their loops (the corpus's dragon with
-// 1% of its triangles removed, 79 holes, at 300: 533 feature seeds), the count grows to twice
-// what they need, as it grows for the topology (issue 18 item 2), and the report says by how
+// 1% of its triangles removed, 167 boundary loops, at 300: 533 feature seeds), the count grows to
+// twice what they need, as it grows for the topology (issue 18 item 2), and the report says by how
 // much. Not for the caller's own seeds or lengths without a count: the error stands.
 UnitRemesh first_remesh(const TriangleMesh& input, RemeshSettings& settings) {
   try {
@@ -171,8 +171,8 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   // item 2): where neither topology control's seeds nor the sizes kept it at the count asked
   // for (ADIS16480.STL of trimesh's test models, a CAD part of genus 24, at 1k; kept at 2k with
   // 2,608 seeds added), the count doubles, and again. Sizes scaled to a count (`--adaptive`, or
-  // the caller's lengths with a count) grow with it (femur.off with 1% of its triangles removed,
-  // adaptive at 300: 39 boundary loops out for 37 in); the caller's lengths without a count are
+  // the caller's lengths with a count) grow with it (man.off with 1% of its triangles removed,
+  // 329 boundary loops, adaptive at 4k: kept at 8k); the caller's lengths without a count are
   // the output's size, and stay.
   if (used.sizing.active() && used.vertices == 0 && used.edge_length == 0 &&
       used.edge_length_rel == 0)
