@@ -137,7 +137,8 @@ class ShapeImprover {
         around_(triangles_around(mesh)),
         changed_at_(mesh.vertices.size(), 0),
         stuck_at_(mesh.vertices.size(), 0),
-        balance_failed_at_(mesh.triangles.size(), 0) {
+        balance_failed_at_(mesh.triangles.size(), 0),
+        visited_(mesh.vertices.size(), 0) {
     support_.resize(mesh_.vertices.size());
     // A gap costs projections, and most vertices never move: each is measured when first needed,
     // or before its triangles first change (on bunny.off at 5k, all of them were half the cost
@@ -792,14 +793,13 @@ class ShapeImprover {
 
   // Whether balancing at triangle t failed since when nothing it reads changed: the positions and
   // triangles of the vertices three rings out from t's (its flips' and collapses' regions, and
-  // their moves' stars), and the floor. (The collapse budget only shrinks.)
-  // Breadth first, each vertex once (marked with this search's stamp), stopping at the first
-  // that changed: three sorted rings per triangle made the sorts a tenth of this step where many
+  // their moves' stars), and the floor. (The collapse budget only shrinks.) Walked breadth
+  // first, each vertex once (marked with this search's stamp), stopping at the first that
+  // changed: three sorted rings per triangle made the sorts a tenth of this step where many
   // badly shaped triangles stay (a scan with dropouts beside slivers).
   bool balance_stuck(Index t) const {
     const std::uint64_t at = balance_failed_at_[t];
     if (!failed_under_this_floor(at)) return false;
-    visited_.resize(mesh_.vertices.size(), 0);
     ++visit_;
     reach_.clear();
     const auto reached_unchanged = [&](Index v) {
@@ -951,8 +951,8 @@ class ShapeImprover {
   std::uint64_t clock_ = 0;
   std::vector<std::uint64_t> changed_at_, stuck_at_;
   std::vector<std::uint64_t> balance_failed_at_;  // per triangle: when balancing there failed
-  // balance_stuck's search: per vertex, the stamp of the last search that reached it; the
-  // vertices reached.
+  // balance_stuck's search (the vertex count never changes here: a collapse leaves its vertex
+  // unused): per vertex, the stamp of the last search that reached it; the vertices reached.
   mutable std::vector<std::uint64_t> visited_;
   mutable std::uint64_t visit_ = 0;
   mutable std::vector<Index> reach_;

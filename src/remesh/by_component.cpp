@@ -212,9 +212,7 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
       for (const Index v : parts[c].input_vertex)
         all[c].sizing.edge_lengths.push_back(settings.sizing.edge_lengths[v]);
 
-  const bool lengths_as_given = settings.sizing.active() && settings.vertices == 0 &&
-                                settings.edge_length == 0 && settings.edge_length_rel == 0;
-  if (!lengths_as_given) {
+  if (!lengths_as_given(settings)) {
     // A vertex where components touch is one output vertex made of a copy in each: the copies
     // beyond the first are vertices on top of the count.
     std::size_t copies = 0;

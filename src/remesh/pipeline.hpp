@@ -20,6 +20,19 @@ void check_output_size(const RemeshSettings& s);
 // even spacing of the count asked for, else the edge length asked for.
 double scale_before_sizing(const TriangleMesh& mesh, const RemeshSettings& s);
 
+// Whether the output's size is the caller's target lengths as they are: a sizing with no count
+// and no edge length to scale it to (nothing then grows or shares out a count).
+inline bool lengths_as_given(const RemeshSettings& s) {
+  return s.sizing.active() && s.vertices == 0 && s.edge_length == 0 && s.edge_length_rel == 0;
+}
+
+// `s` with its size set by a vertex count alone.
+inline RemeshSettings at_count(RemeshSettings s, std::size_t vertices) {
+  s.vertices = vertices;
+  s.edge_length = s.edge_length_rel = 0;
+  return s;
+}
+
 // requested_vertex_count for a mesh of about unit size (see size_exponent in cvtmesh/mesh.hpp),
 // with the size field of its sizing, if any.
 std::size_t unit_vertex_count(const TriangleMesh& mesh, const RemeshSettings& s,

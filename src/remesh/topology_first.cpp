@@ -98,15 +98,11 @@ UnitRemesh first_remesh(const TriangleMesh& input, RemeshSettings& settings) {
   try {
     return remesh_unit(input, settings);
   } catch (const FeaturesNeedMoreSeeds& e) {
-    const bool counted = settings.vertices > 0 || settings.edge_length != 0 ||
-                         settings.edge_length_rel != 0 || !settings.sizing.active();
-    if (!settings.initial_seeds.empty() || !counted) throw;
+    if (!settings.initial_seeds.empty() || lengths_as_given(settings)) throw;
     const std::size_t asked = unit_vertex_count(input, settings, nullptr);
     std::size_t needed = e.needed;
     for (int growth = 1;; ++growth) {
-      RemeshSettings more = settings;
-      more.edge_length = more.edge_length_rel = 0;
-      more.vertices = 2 * std::max(needed, asked);
+      const RemeshSettings more = at_count(settings, 2 * std::max(needed, asked));
       try {
         UnitRemesh grown = remesh_unit(input, more);
         grown.result.count_grown = more.vertices - asked;
@@ -174,13 +170,9 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   // the caller's lengths with a count) grow with it (man.off with 1% of its triangles removed,
   // 329 boundary loops, adaptive at 4k: kept at 8k); the caller's lengths without a count are
   // the output's size, and stay.
-  if (used.sizing.active() && used.vertices == 0 && used.edge_length == 0 &&
-      used.edge_length_rel == 0)
-    return best;
+  if (lengths_as_given(used)) return best;
   const std::size_t asked = unit_vertex_count(input, settings, nullptr);
-  RemeshSettings more = used;
-  more.edge_length = more.edge_length_rel = 0;
-  more.vertices = unit_vertex_count(input, used, nullptr);
+  RemeshSettings more = at_count(used, unit_vertex_count(input, used, nullptr));
   for (int doubling = 0; doubling < kCountDoublings && topology_kept(best.result) == 0 &&
                          !best.result.time_limit_reached;
        ++doubling) {
