@@ -162,6 +162,23 @@ TEST(Adaptive, ThinWaistKeepsTopologyWhereUniformDoesNot) {
   EXPECT_EQ(adaptive.triangles_removed, 0u);
 }
 
+TEST(Adaptive, TheFirstOutputIsPolishedOnlyWhereTopologyControlMustAct) {
+  // Under a density, the optimizer's badly shaped triangles sit where the sizes change, and the
+  // last step mends them: no Lloyd polishing. A waist too thin for the count keeps it.
+  RemeshSettings s;
+  s.sizing.adaptive = 1.5;
+  s.vertices = 1000;
+  const RemeshResult kept = remesh(dumbbell(0.3, 80, 48), s);
+  EXPECT_GT(kept.defects_polished, 0u);
+  EXPECT_EQ(kept.islands_seeded + kept.seeds_refined, 0u);
+  EXPECT_EQ(kept.polish_rounds, 0);
+  EXPECT_GE(measure_quality(kept.mesh).angle_min_deg, 30);
+  s.vertices = 50;
+  const RemeshResult mended = remesh(dumbbell(0.06, 160, 96), s);
+  EXPECT_GT(mended.islands_seeded + mended.seeds_refined, 0u);
+  EXPECT_GT(mended.polish_rounds, 0);
+}
+
 TEST(Adaptive, ANarrowStripBetweenFeaturesGetsEdgesAsLongAsItIsWide) {
   // A flat sheet: the square [0,4]² with a tab [4,8] × [0,0.1]. Flat, it has no poles; only the
   // gap between the tab's sides (issue 20 item 1) makes its edges short: about its width,

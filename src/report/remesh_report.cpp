@@ -116,8 +116,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
   text += fmt::format(
       "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
-      "triangles polished in {} rounds; {} edges flipped, {} collapsed and {} vertices moved "
-      "around badly shaped triangles; {} vertices fitted to the input\n",
+      "triangles, {} rounds of Lloyd polishing; {} edges flipped, {} collapsed and {} vertices "
+      "moved around badly shaped triangles; {} vertices fitted to the input\n",
       r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
       r.polish_rounds, r.shape_flips, r.short_edges_collapsed, r.shape_moves, r.vertices_fitted);
   if (r.flat_ears_removed > 0)
