@@ -22,6 +22,9 @@
 //     split of the input and the extra topology work included), and each one's θmin and Qmin.
 //     Meshes: corpus/ChineseDragon-10kv.off (two holes 0.1-0.3% of an edge across) and
 //     corpus/spool.off (a strip a third of an edge wide).
+//   BM_ManyHolesVsNone: a level-5 icosphere with 200 holes of one triangle each, against the
+//     whole sphere, at 1.5k vertices: time_ratio and initialization_ratio (the size field's fit
+//     to the count is most of the latter), and the holed output's θmin.
 // Meshes: ../shared/data/{bunny.off, igea.ply}; cases skip when they are absent.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -177,6 +180,31 @@ BENCHMARK(BM_GapGradedVsEven)
     ->UseManualTime()
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+
+// A scan with dropouts (issue 18's fuzz cases): the sizes grade down to each hole, fit to the
+// count by bisection, and the input is split where they change fast. Against the same sphere
+// without holes, one after the other.
+void BM_ManyHolesVsNone(benchmark::State& state) {
+  const TriangleMesh whole = testing::icosphere(5);
+  const TriangleMesh holed = testing::with_one_triangle_holes(whole, 200, 97);
+  for (auto _ : state) {
+    double time[2], initialization[2];
+    for (const int k : {0, 1}) {
+      RemeshSettings s;
+      s.vertices = 1500;
+      s.hausdorff.reset();
+      const auto start = Clock::now();
+      const RemeshResult r = remesh(k == 0 ? whole : holed, s);
+      time[k] = seconds(start);
+      initialization[k] = r.seconds_initialization;
+      if (k == 1) state.counters["holes_theta_min"] = measure_quality(r.mesh).angle_min_deg;
+    }
+    state.SetIterationTime(time[0] + time[1]);
+    state.counters["time_ratio"] = time[1] / time[0];
+    state.counters["initialization_ratio"] = initialization[1] / initialization[0];
+  }
+}
+BENCHMARK(BM_ManyHolesVsNone)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);
 
 void BM_CgalIsotropic(benchmark::State& state) {
   const TriangleMesh* input = load(state, kMeshes[state.range(0)]);

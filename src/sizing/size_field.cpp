@@ -213,7 +213,6 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
   // a fifth of the remesh when each built its own adjacency).
   const EdgeGraph graph(mesh);
   const auto sizes_at = [&](double x) { return scaled_sizes(mesh, h, used, x, s, &graph); };
-  const auto count = [&](double x) { return SizeField(mesh, sizes_at(x)).vertex_count(); };
   const auto n = static_cast<double>(vertices);
   for (int step = 0; step < 12; ++step) {
     // The field of the k that reaches the count is returned as it is: not graded again.
@@ -222,10 +221,15 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
     if (std::abs(c / n - 1) < 1e-3) return field;
     k *= std::sqrt(c / n);
   }
+  // Where the steps above overshoot (sizes clamped, or graded down to many small holes), a
+  // bisection, which stops as soon as it reaches the count as closely.
   double lo = std::log(k) - 20, hi = std::log(k) + 20;
   for (int step = 0; step < 60; ++step) {
     const double mid = (lo + hi) / 2;
-    (count(std::exp(mid)) > n ? lo : hi) = mid;
+    SizeField field(mesh, sizes_at(std::exp(mid)));
+    const double c = field.vertex_count();
+    if (std::abs(c / n - 1) < 1e-3) return field;
+    (c > n ? lo : hi) = mid;
   }
   return SizeField(mesh, sizes_at(std::exp((lo + hi) / 2)));
 }

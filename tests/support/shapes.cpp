@@ -152,6 +152,29 @@ TriangleMesh sheet_pinched_at_a_point(int n) {
   return m;
 }
 
+TriangleMesh with_one_triangle_holes(TriangleMesh mesh, std::size_t holes, std::size_t step) {
+  std::vector<bool> touched(mesh.vertices.size(), false);
+  std::map<Edge, int> uses;
+  for (const Triangle& f : mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++uses[{std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3])}];
+  for (const auto& [e, n] : uses)
+    if (n == 1) touched[e[0]] = touched[e[1]] = true;
+  std::vector<Triangle> kept;
+  std::size_t made = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& f = mesh.triangles[t];
+    if (made < holes && t % step == 0 && !touched[f[0]] && !touched[f[1]] && !touched[f[2]]) {
+      for (const Index v : f) touched[v] = true;
+      ++made;
+    } else {
+      kept.push_back(f);
+    }
+  }
+  mesh.triangles = std::move(kept);
+  return mesh;
+}
+
 TriangleMesh moebius_strip(int n) {
   TriangleMesh m;
   for (int i = 0; i < n; ++i) {

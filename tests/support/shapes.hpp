@@ -60,6 +60,11 @@ TriangleMesh pinched_torus(double r, int nu, int nv);
 // glued with a half twist. One boundary loop, not orientable.
 TriangleMesh moebius_strip(int n);
 
+// `mesh` with up to `holes` holes of one triangle each: every `step`-th triangle that shares no
+// vertex with an earlier hole or the boundary (a scan with dropouts; each hole is one more
+// boundary loop).
+TriangleMesh with_one_triangle_holes(TriangleMesh mesh, std::size_t holes, std::size_t step);
+
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
 
