@@ -420,5 +420,21 @@ TEST(ImproveShapes, ASaddleVertexMovesOnceTheRestIsDone) {
   EXPECT_LT(projector.distance_to(mesh.vertices[0]), 1e-9);
 }
 
+// Jittered by 12% of the radius (an edge and a half), the sphere keeps badly shaped triangles
+// that the searches cannot mend, and they would go on searching: 34 searches per vertex without
+// the budget of 24 per vertex (stopped after the sweep or balancing round that reaches it),
+// with the same Qmin at the end.
+TEST(ImproveShapes, TheSearchesStopAtTheirBudget) {
+  const TriangleMesh sphere = icosphere(5);
+  const SurfaceProjector surface(sphere);
+  TriangleMesh mesh = jittered_on_sphere(icosphere(3), 0.12, 7);
+  const QualityReport before = measure_quality(mesh);
+  const ShapeImprovement done = improve(mesh, surface, nullptr, {}, {}, 5);
+  EXPECT_GT(done.searches, 20 * mesh.vertices.size());
+  EXPECT_LE(done.searches, 28 * mesh.vertices.size());
+  EXPECT_GT(measure_quality(mesh).q_min, before.q_min);
+  EXPECT_TRUE(analyze_topology(mesh).is_manifold());
+}
+
 }  // namespace
 }  // namespace cvtmesh

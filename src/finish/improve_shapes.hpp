@@ -37,6 +37,7 @@ struct ShapeImprovement {
   std::size_t flips = 0;      // edges flipped
   std::size_t moves = 0;      // vertex moves kept
   std::size_t collapses = 0;  // short edges collapsed (their surface vertex left unused)
+  std::size_t searches = 0;   // searches for a better place for a vertex
 };
 
 // Improves the triangles of `mesh` with θmin under 40° or Q under 0.7 (a little above what a
