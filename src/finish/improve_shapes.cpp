@@ -80,7 +80,7 @@ constexpr double kSearchBelow = 0.7;
 // for a better place reach this many per vertex: on the 57 shared meshes at 1k, 5k and 10k and
 // adaptive at 2k, a call took 13.4 at most (couplingdown.off at 1k); a blade of slivers with
 // 155 sliver holes, whose output keeps hundreds of badly shaped triangles, took 35-64 in each
-// of its dozens of calls (230 s at 300 vertices, grown to 2k for its holes).
+// of its dozens of calls (over 200 s at 300 vertices, grown to 2.1k for its holes).
 constexpr double kSearchesPerVertex = 24;
 
 // One vertex in this many at most is taken away by collapses, so that the output keeps the
@@ -229,7 +229,6 @@ class ShapeImprover {
     return changed;
   }
 
-  // Drops the triangles that collapses took away (their vertices stay, unused).
   std::size_t searches() const { return searches_; }
   // Whether the searches reached their budget (kSearchesPerVertex).
   bool spent() const {
@@ -237,6 +236,7 @@ class ShapeImprover {
            kSearchesPerVertex * static_cast<double>(mesh_.vertices.size());
   }
 
+  // Drops the triangles that collapses took away (their vertices stay, unused).
   void finish() {
     std::size_t kept = 0;
     for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
