@@ -274,11 +274,11 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   PolishSettings polish = m.polish;
   for (int round = 0;; ++round) {
     Assessment a = assess(m, special, output.mesh, seeds, constraints);
-    // Where topology control must add seeds, it adds them to a polished output: unpolished,
-    // the cells of thin parts are in more pieces, and the seeds added there left worse triangles
-    // (man.off adaptive at 2k: 103 islands where 38, 137 seeds added where 53, θmin 29.7° ->
-    // 18.4°; with seed 2, 34 seeds where 103, θmin 36.7° -> 22.8°).
-    if (round == 0 && m.first_unpolished && !a.topology_kept && polish.rounds > 0) {
+    // An output not polished at once (polished_at_once) is polished before seeds are added to
+    // it: unpolished, the cells of thin parts are in more pieces, and the seeds added there left
+    // worse triangles (man.off adaptive at 2k: 103 islands where 38, 137 seeds added where 53,
+    // θmin 29.7° -> 18.4°; with seed 2, 34 seeds where 103, θmin 36.7° -> 22.8°).
+    if (round == 0 && !polished_at_once(m.placement) && !a.topology_kept && polish.rounds > 0) {
       output = extract_polished(m.surface, seeds, m.placement, polish, m.traversals);
       report.polish_rounds += output.rounds;
       a = assess(m, special, output.mesh, seeds, constraints);

@@ -20,9 +20,6 @@ struct MendContext {
   const CurveSpacing& spacing;    // target edge lengths along the curves
   PolishSettings polish;
   TraversalMemory& traversals;  // the last traversal of `surface` (see extract_polished)
-  // The first output was extracted without polishing: it is polished (by `polish`) before any
-  // seed is added, if its topology is not the input's.
-  bool first_unpolished = false;
 };
 
 struct MendReport {

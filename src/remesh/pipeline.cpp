@@ -271,20 +271,15 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     // triangles that the last one left unchanged (issue 18: topology control works locally).
     // Freed before the finishing steps.
     TraversalMemory traversals;
-    // Under a density, the optimizer's badly shaped triangles are where the valences change with
-    // the size (the 5-7 pairs the grading needs), not unconverged seeds: Lloyd steps barely move
-    // them (bull.off adaptive at 2k: 227 defects, 180 after 30 steps over 1,410 of its 2,000
-    // seeds) and the last step's flips and moves mend them on the mesh. Polished only where
-    // topology control must act (mend_topology).
-    const bool unpolished = !density.empty();
-    PolishedOutput output = extract_polished(mesh, seeds, placement,
-                                             {unpolished ? 0 : settings.polish_rounds}, traversals);
+    PolishedOutput output =
+        extract_polished(mesh, seeds, placement,
+                         {polished_at_once(placement) ? settings.polish_rounds : 0}, traversals);
     result.polish_rounds = output.rounds;
     result.defects_polished = output.defects;
     // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
     const MendContext context{
-        mesh,           result.input_topology,    features,   *curves,   *projector, placement,
-        *curve_spacing, {settings.polish_rounds}, traversals, unpolished};
+        mesh,           result.input_topology,    features,  *curves, *projector, placement,
+        *curve_spacing, {settings.polish_rounds}, traversals};
     const auto mend_start = Clock::now();
     output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
                            mends);

@@ -214,11 +214,12 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
   const EdgeGraph graph(mesh);
   const auto sizes_at = [&](double x) { return scaled_sizes(mesh, h, used, x, s, &graph); };
   const auto n = static_cast<double>(vertices);
+  // The field of a k that reaches the count within 0.1% is returned as it is: not graded again.
+  const auto reached = [&](double c) { return std::abs(c / n - 1) < 1e-3; };
   for (int step = 0; step < 12; ++step) {
-    // The field of the k that reaches the count is returned as it is: not graded again.
     SizeField field(mesh, sizes_at(k));
     const double c = field.vertex_count();
-    if (std::abs(c / n - 1) < 1e-3) return field;
+    if (reached(c)) return field;
     k *= std::sqrt(c / n);
   }
   // Where the steps above overshoot (sizes clamped, or graded down to many small holes), a
@@ -228,7 +229,7 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
     const double mid = (lo + hi) / 2;
     SizeField field(mesh, sizes_at(std::exp(mid)));
     const double c = field.vertex_count();
-    if (std::abs(c / n - 1) < 1e-3) return field;
+    if (reached(c)) return field;
     (c > n ? lo : hi) = mid;
   }
   return SizeField(mesh, sizes_at(std::exp((lo + hi) / 2)));
