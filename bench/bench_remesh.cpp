@@ -24,7 +24,9 @@
 //     corpus/spool.off (a strip a third of an edge wide).
 //   BM_ManyHolesVsNone: a level-5 icosphere with 200 holes of one triangle each, against the
 //     whole sphere, at 1.5k vertices: time_ratio and initialization_ratio (the size field's fit
-//     to the count is most of the latter), and the holed output's θmin.
+//     to the count is most of the latter), and the holed output's θmin; then the holed sphere
+//     filled first as `remesh --fill-holes` fills it: filled_time_ratio (the filling included)
+//     and its θmin.
 // Meshes: ../shared/data/{bunny.off, igea.ply}; cases skip when they are absent.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -188,20 +190,24 @@ void BM_ManyHolesVsNone(benchmark::State& state) {
   const TriangleMesh whole = testing::icosphere(5);
   const TriangleMesh holed = testing::with_one_triangle_holes(whole, 200, 97);
   for (auto _ : state) {
-    double time[2], initialization[2];
-    for (const int k : {0, 1}) {
+    double time[3], initialization[2];
+    for (const int k : {0, 1, 2}) {
       RemeshSettings s;
       s.vertices = 1500;
       s.hausdorff.reset();
       const auto start = Clock::now();
-      const RemeshResult r = remesh(k == 0 ? whole : holed, s);
+      TriangleMesh input = k == 0 ? whole : holed;
+      if (k == 2) fill_holes(input, 10 * requested_edge_length(input, s));
+      const RemeshResult r = remesh(input, s);
       time[k] = seconds(start);
-      initialization[k] = r.seconds_initialization;
+      if (k < 2) initialization[k] = r.seconds_initialization;
       if (k == 1) state.counters["holes_theta_min"] = measure_quality(r.mesh).angle_min_deg;
+      if (k == 2) state.counters["filled_theta_min"] = measure_quality(r.mesh).angle_min_deg;
     }
-    state.SetIterationTime(time[0] + time[1]);
+    state.SetIterationTime(time[0] + time[1] + time[2]);
     state.counters["time_ratio"] = time[1] / time[0];
     state.counters["initialization_ratio"] = initialization[1] / initialization[0];
+    state.counters["filled_time_ratio"] = time[2] / time[0];
   }
 }
 BENCHMARK(BM_ManyHolesVsNone)->UseManualTime()->Unit(benchmark::kSecond)->Iterations(1);

@@ -778,5 +778,34 @@ TEST(Cli, EvenSizesGradeDownToAPinholeUnlessToldNot) {
   EXPECT_EQ(run_cli(dir, "remesh --vertices 300 --gap-gradation -1 " + files).code, 2);
 }
 
+// A sphere with five one-triangle holes (a scan's dropouts): kept by default, each an output
+// boundary loop; --fill-holes closes those under 10 edge lengths round first (the report
+// compares with the filled input), --fill-holes E under E; 0 is no length.
+TEST(Cli, FillHolesClosesTheInputsSmallHolesFirst) {
+  const TempDir dir;
+  write_mesh(dir / "holed.off", with_one_triangle_holes(icosphere(3), 5, 97));
+  const std::string files = quoted(dir / "holed.off") + " " + quoted(dir / "out.off");
+  CliRun r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 " + files);
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["boundary_loops"].get<int>(), 5);
+  EXPECT_EQ(j["input_holes_filled"].get<int>(), 0);
+  r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 --fill-holes " + files);
+  ASSERT_EQ(r.code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["boundary_loops"].get<int>(), 0);
+  EXPECT_TRUE(j["same_topology"].get<bool>());
+  EXPECT_EQ(j["input_holes_filled"].get<int>(), 5);
+  EXPECT_EQ(j["input_hole_triangles_added"].get<int>(), 5);
+  EXPECT_GE(j["angle_min_deg"].get<double>(), 30);
+  EXPECT_NE(r.err.find("5 holes shorter than"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("holed.off"), std::string::npos) << r.err;
+  // At 300 vertices an edge is about 0.23 long, a hole about 0.45 round: 2 edge lengths.
+  r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 --fill-holes 1 " + files);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["input_holes_filled"].get<int>(), 0);
+  EXPECT_EQ(run_cli(dir, "remesh --vertices 300 --fill-holes 0 " + files).code, 2);
+}
+
 }  // namespace
 }  // namespace cvtmesh

@@ -28,9 +28,26 @@ struct RemeshOptions {
   RemeshSettings settings;
   int threads = 0;
   std::size_t samples = kRemeshReportSamples;
+  double fill_holes = 0;  // in edge lengths; 0: holes stay
   bool quiet = false, json = false, no_features = false, no_hausdorff = false;
   bool feature_angle_given = false;
 };
+
+// "IN: 12 holes shorter than 0.42 (10 edge lengths) filled with 15 triangles; 2 left open ...".
+void print_holes_filled(const std::string& input, const HoleFilling& f, double longest,
+                        double edges) {
+  std::string line = fmt::format(
+      "{}: {} holes shorter than {:.4g} ({:g} edge lengths) filled with "
+      "{} triangles",
+      input, f.filled, longest, edges, f.triangles_added);
+  if (f.left_open > 0)
+    line += fmt::format(
+        "; {} left open (no triangulation on their own vertices, or one that "
+        "joins two vertices joined already)",
+        f.left_open);
+  if (f.larger > 0) line += fmt::format("; {} larger holes and rims kept", f.larger);
+  fmt::print(stderr, "{}\n", line);
+}
 
 int run_remesh(RemeshOptions o) {
   const auto threads = limit_threads(o.threads);
@@ -72,6 +89,14 @@ int run_remesh(RemeshOptions o) {
       throw InputError(o.seeds_file + ": two seeds at the same point");
     s.vertices = s.initial_seeds.size();  // the output size
   }
+  HoleFilling filled;
+  if (o.fill_holes > 0) {
+    // After the sizes are known (a count from the sizing) and before anything reads the mesh's
+    // loops: the filled surface is what is remeshed, and what the report compares with.
+    const double longest = o.fill_holes * requested_edge_length(input, s);
+    filled = fill_holes(input, longest);
+    if (!o.quiet) print_holes_filled(o.input, filled, longest, o.fill_holes);
+  }
   s.optimizer = o.optimizer == "lloyd" ? Optimizer::lloyd : Optimizer::lbfgs;
   s.mode = o.mode == "rcvt" ? CvtMode::rcvt : o.mode == "ccvt" ? CvtMode::ccvt : CvtMode::both;
   if (!o.quiet) {
@@ -98,7 +123,7 @@ int run_remesh(RemeshOptions o) {
                "then (valid, less optimized)\n",
                o.output, s.time_limit);
 
-  const MeshReport report = remesh_report(o.output, input, r);
+  const MeshReport report = remesh_report(o.output, input, r, filled);
   fmt::print("{}", o.json ? report.json.dump(2) + "\n" : report.text);
   if (r.triangles_removed > 0 && r.holes_closed > 0)
     fmt::print(stderr,
@@ -176,6 +201,14 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::NonNegativeNumber)
       ->excludes(adaptive)
       ->excludes(sizing);
+  cmd->add_option("--fill-holes", o->fill_holes,
+                  "Fill the input's holes whose boundary is shorter than E edge lengths (the "
+                  "even length of the vertex count) before remeshing: a scan's dropouts, which "
+                  "kept would each cost many small triangles. Never a sheet's rim (a loop as "
+                  "long as the square root of its part's area)")
+      ->expected(0, 1)
+      ->default_str("10")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--min-edge-length", o->settings.sizing.min_edge_length,
                   "Clamp of the target lengths (with --adaptive or --sizing)")
       ->check(CLI::NonNegativeNumber);

@@ -197,6 +197,11 @@ struct RemeshResult {
 // more than 50 million).
 std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSettings& settings);
 
+// The edge length of that many vertices spread evenly over the surface, as equilateral
+// triangles: the scale of the output (with a sizing, of its median edge). Throws as
+// requested_vertex_count.
+double requested_edge_length(const TriangleMesh& mesh, const RemeshSettings& settings);
+
 // Each connected component (triangles joined by edges) is remeshed on its own, with its own seeds
 // (none owns another component's surface): the count is shared by area, each component getting
 // at least 4 vertices and more than its feature seeds. Components that touch at a vertex keep it

@@ -67,4 +67,23 @@ std::size_t remove_duplicate_triangles(TriangleMesh& mesh);
 // Counts what repair_mesh() would change, without changing the mesh.
 RepairReport diagnose_repairs(const TriangleMesh& mesh);
 
+struct HoleFilling {
+  std::size_t filled = 0;           // holes closed
+  std::size_t triangles_added = 0;  // the triangles that closed them
+  // Holes under the length left open: no triangulation of the loop alone has no degenerate
+  // triangle, or it would join two vertices that an edge joins already (around a thin part).
+  std::size_t left_open = 0;
+  std::size_t larger = 0;  // holes at or over the length, or rims (below), left open
+};
+
+// Closes each boundary loop of `mesh` shorter than `max_perimeter` (in the mesh's units) with
+// triangles on the loop's own vertices, oriented as the triangles around it (CGAL's hole
+// filling: Liepa's triangulation that makes the largest dihedral angle, then the area, smallest).
+// A loop at least as long as the square root of its component's area is the rim of a sheet, not
+// a hole in it, and stays open whatever the length: a patch over a disc's rim would double it.
+// For a mesh that repair_mesh() made: a vertex with two boundary edges leaving it (which repair
+// keeps as one copy per fan) leaves every loop open. Deterministic. InvalidArgument for a
+// negative or NaN length.
+HoleFilling fill_holes(TriangleMesh& mesh, double max_perimeter);
+
 }  // namespace cvtmesh

@@ -10,6 +10,7 @@
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
+#include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
 
 namespace cvtmesh {
@@ -49,8 +50,9 @@ inline constexpr std::size_t kRemeshReportSamples = 20'000;
 
 // The report of remesh(input) = result, named `name` (the output's): report_mesh of the output
 // against the input, then the features kept (distance to the input's curves, corners), topology
-// control, the CVT's figures and the phases' times. `cvtmesh remesh` prints it.
+// control, the CVT's figures and the phases' times; `filled`: what fill_holes did to the input
+// before (`input` is then the filled one). `cvtmesh remesh` prints it.
 MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
-                         const RemeshResult& result);
+                         const RemeshResult& result, const HoleFilling& filled = {});
 
 }  // namespace cvtmesh

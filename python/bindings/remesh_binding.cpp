@@ -76,7 +76,8 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
                  std::optional<double> feature_angle, bool no_features,
                  const py::object& feature_edges, std::optional<double> adaptive,
                  const py::object& sizing, double gap_gradation, double min_edge_length,
-                 double max_edge_length, double time_limit, bool quiet, int threads,
+                 double max_edge_length, std::optional<double> fill_holes, double time_limit,
+                 bool quiet, int threads,
                  const std::function<void(const RemeshProgress&)>& progress) {
   TriangleMesh input = mesh_from_arrays(V, F);
   RemeshSettings s;
@@ -130,6 +131,12 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
   s.seed = seed;
   s.time_limit = time_limit;
   if (!no_hausdorff) s.hausdorff = HausdorffSettings{.samples = samples};
+  HoleFilling filled;
+  if (fill_holes) {
+    if (!(*fill_holes > 0))
+      throw InvalidArgument("fill_holes must be a positive number of edge lengths");
+    filled = cvtmesh::fill_holes(input, *fill_holes * requested_edge_length(input, s));
+  }
   if (threads < 0) throw InvalidArgument("threads must not be negative (0: all cores)");
 
   PythonHooks hooks;
@@ -152,7 +159,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
     std::optional<tbb::global_control> limit;
     if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
     result = cvtmesh::remesh(input, s);
-    report = remesh_report("output", input, *result);
+    report = remesh_report("output", input, *result, filled);
   } catch (const Cancelled&) {
     hooks.raise_if_stopped();  // the Python exception that stopped the work, if one did
     throw;
@@ -233,6 +240,10 @@ gap_gradation : float, default 5
     edges (0: even everywhere, slivers at such gaps).
 min_edge_length, max_edge_length : float, default 0 (none)
     Clamps of the target lengths of adaptive or sizing.
+fill_holes : float, edge lengths (the CLI's default when given alone: 10)
+    First fill the input's holes whose boundary is shorter than this many edge lengths (the
+    even length of the vertex count), never a sheet's rim; the report (input_holes_filled)
+    then compares with the filled input. None: every hole stays a boundary loop.
 time_limit : float, seconds, default 0 (none)
     Then the optimization and the rounds stop, and the mesh of the seeds as they are is
     returned (valid; report["time_limit_reached"] says so).
@@ -287,8 +298,8 @@ void add_remesh(py::module_& m) {
         py::arg("sizing") = py::none(), py::arg("gap_gradation") = defaults.sizing.gap_gradation,
         py::arg("min_edge_length") = defaults.sizing.min_edge_length,
         py::arg("max_edge_length") = defaults.sizing.max_edge_length,
-        py::arg("time_limit") = defaults.time_limit, py::arg("quiet") = true,
-        py::arg("threads") = 0, py::arg("progress") = nullptr);
+        py::arg("fill_holes") = py::none(), py::arg("time_limit") = defaults.time_limit,
+        py::arg("quiet") = true, py::arg("threads") = 0, py::arg("progress") = nullptr);
   m.def("keep_freed_memory", &keep_freed_memory,
         R"(Make this process's allocator keep freed memory for reuse (glibc's mallopt): remeshes
 12-14% faster at the median, peak memory at most 10% higher, for every later allocation of the process. The cvtmesh

@@ -119,6 +119,20 @@ class RemeshTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "exclude"):
             cvtmesh.remesh(self.V, self.F, 400, sizing=lengths, adaptive=2)
 
+    def test_fill_holes_closes_the_inputs_small_holes_first(self):
+        # The torus with three of its triangles removed, apart: three holes of one triangle.
+        F = np.delete(self.F, [0, 700, 1400], axis=0)
+        _, _, kept = cvtmesh.remesh(self.V, F, 600, no_hausdorff=True)
+        self.assertEqual(kept["boundary_loops"], 3)
+        self.assertEqual(kept["input_holes_filled"], 0)
+        _, _, r = cvtmesh.remesh(self.V, F, 600, fill_holes=10, no_hausdorff=True)
+        self.assertEqual(r["boundary_loops"], 0)
+        self.assertEqual(r["genus"], 1)
+        self.assertEqual(r["input_holes_filled"], 3)
+        self.assertTrue(r["same_topology"])
+        with self.assertRaisesRegex(ValueError, "fill_holes"):
+            cvtmesh.remesh(self.V, F, 600, fill_holes=0)
+
     def test_progress_callback_sees_every_iteration(self):
         seen = []
         _, _, r = cvtmesh.remesh(self.V, self.F, vertices=300, progress=seen.append,

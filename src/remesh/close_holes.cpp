@@ -1,69 +1,34 @@
 #include "remesh/close_holes.hpp"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
-
 #include <algorithm>
 #include <optional>
 #include <vector>
 
-#include "features/edge_uses.hpp"
+#include "geometry/hole_patch.hpp"
 #include "remesh/output_defects.hpp"
 
 namespace cvtmesh {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-// The boundary loops of `mesh` (boundary_loops: a triangle closing the hole on three consecutive
-// loop vertices a, b, c is (a, b, c)), with each step's third vertex in its triangle. Only the
-// loops made wholly of opened edges (edges of `removed`), unless `every`; nothing when a vertex
-// has two boundary edges leaving it (a non-manifold vertex: make_manifold leaves none).
-struct Loop {
-  std::vector<Index> vertices;
-  std::vector<Index> opposite;  // per edge (vertices[i], vertices[i + 1]): its triangle's third
-};
-std::optional<std::vector<Loop>> opened_loops(const TriangleMesh& mesh,
-                                              const std::vector<EdgeUse>& uses,
-                                              std::span<const Triangle> removed, bool every) {
+// The boundary loops of `mesh` made wholly of opened edges (edges of `removed`), unless
+// `every`; nothing when a vertex has two boundary edges leaving it (a non-manifold vertex:
+// make_manifold leaves none).
+std::optional<std::vector<HoleLoop>> opened_loops(const TriangleMesh& mesh,
+                                                  const std::vector<EdgeUse>& uses,
+                                                  std::span<const Triangle> removed, bool every) {
   std::vector<Edge> opened;
   for (const Triangle& t : removed)
     for (int k = 0; k < 3; ++k) opened.push_back(edge_of(t[k], t[(k + 1) % 3]));
   std::sort(opened.begin(), opened.end());
-  const std::optional<std::vector<BoundaryLoop>> boundary = boundary_loops(mesh, uses);
-  if (!boundary) return std::nullopt;
-  std::vector<Loop> loops;
-  for (const BoundaryLoop& b : *boundary) {
-    Loop loop{b.vertices, {}};
-    bool all_opened = true;
-    for (const std::size_t i : b.uses) {
-      all_opened = all_opened && std::binary_search(opened.begin(), opened.end(), uses[i].edge);
-      loop.opposite.push_back(mesh.triangles[uses[i].triangle()][(uses[i].corner + 2) % 3]);
-    }
-    if (all_opened || every) loops.push_back(std::move(loop));
-  }
+  std::optional<std::vector<HoleLoop>> loops = hole_loops(mesh, uses);
+  if (!loops || every) return loops;
+  std::erase_if(*loops, [&](const HoleLoop& loop) {
+    return !std::all_of(loop.uses.begin(), loop.uses.end(), [&](std::size_t i) {
+      return std::binary_search(opened.begin(), opened.end(), uses[i].edge);
+    });
+  });
   return loops;
-}
-
-// The triangles closing `loop`, or nothing when CGAL finds no complete triangulation (a loop
-// whose every fan has a degenerate triangle).
-std::optional<std::vector<Triangle>> triangulated(const TriangleMesh& mesh, const Loop& loop) {
-  std::vector<Kernel::Point_3> points, third;
-  for (std::size_t i = 0; i < loop.vertices.size(); ++i) {
-    const Vec3& p = mesh.vertices[loop.vertices[i]];
-    const Vec3& q = mesh.vertices[loop.opposite[i]];
-    points.emplace_back(p.x, p.y, p.z);
-    third.emplace_back(q.x, q.y, q.z);
-  }
-  std::vector<CGAL::Triple<int, int, int>> patch;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(points, third,
-                                                           std::back_inserter(patch));
-  if (patch.size() + 2 != loop.vertices.size()) return std::nullopt;
-  std::vector<Triangle> triangles;
-  for (const auto& [a, b, c] : patch)
-    triangles.push_back({loop.vertices[a], loop.vertices[b], loop.vertices[c]});
-  return triangles;
 }
 
 }  // namespace
@@ -74,23 +39,17 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   const std::vector<EdgeUse> uses = edge_uses(mesh);  // sorted by edge
   // A closed input's output has no hole of its own: every loop is one to close.
   const bool closed_input = input.is_closed();
-  const std::optional<std::vector<Loop>> loops = opened_loops(mesh, uses, removed, closed_input);
+  const std::optional<std::vector<HoleLoop>> loops =
+      opened_loops(mesh, uses, removed, closed_input);
   if (!loops || loops->empty()) return {};
   const std::size_t before = mesh.triangles.size(), vertices_before = mesh.vertices.size();
-  // Whether the mesh as it came has the edge. The patches add none that another patch could
-  // reuse: a chord joins two vertices of one loop, and no vertex is on two loops.
-  const auto in_mesh = [&](const Edge& e) {
-    const auto at = std::lower_bound(uses.begin(), uses.end(), e,
-                                     [](const EdgeUse& u, const Edge& x) { return u.edge < x; });
-    return at != uses.end() && at->edge == e;
-  };
   // Back to the first `triangles` and `vertices`, dropping what patches added after them.
   const auto truncate = [&](std::size_t triangles, std::size_t vertices) {
     mesh.triangles.resize(triangles);
     mesh.vertices.resize(vertices);
   };
   // A fan around a new vertex at the loop's centroid, onto the surface: it has no chord.
-  const auto fan_of = [&](const Loop& loop) {
+  const auto fan_of = [&](const HoleLoop& loop) {
     Vec3 centroid;
     for (const Index v : loop.vertices) centroid = centroid + mesh.vertices[v];
     const auto centre = static_cast<Index>(mesh.vertices.size());
@@ -102,24 +61,13 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
     return fan;
   };
   // Each loop's patch, or nothing where CGAL finds no triangulation.
-  const auto patch_of = [&](const Loop& loop) -> std::optional<std::vector<Triangle>> {
-    std::optional<std::vector<Triangle>> patch = triangulated(mesh, loop);
+  const auto patch_of = [&](const HoleLoop& loop) -> std::optional<std::vector<Triangle>> {
+    std::optional<std::vector<Triangle>> patch = hole_patch(mesh, loop);
     if (!patch) return std::nullopt;
-    // A chord the mesh has already (its two ends joined around the other side of a thin part)
-    // would make that edge non-manifold: then a fan closes the loop.
-    const auto chord_reused = [&](const Triangle& t) {
-      for (int k = 0; k < 3; ++k) {
-        const Index a = t[k], b = t[(k + 1) % 3];
-        const std::size_t i =
-            std::find(loop.vertices.begin(), loop.vertices.end(), a) - loop.vertices.begin();
-        const bool loop_edge =
-            loop.vertices[(i + 1) % loop.vertices.size()] == b ||
-            loop.vertices[(i + loop.vertices.size() - 1) % loop.vertices.size()] == b;
-        if (!loop_edge && in_mesh(edge_of(a, b))) return true;
-      }
-      return false;
-    };
-    if (std::any_of(patch->begin(), patch->end(), chord_reused)) return fan_of(loop);
+    // A chord the mesh has already (the mesh as it came: the patches add none that another patch
+    // could reuse, a chord joins two vertices of one loop, and no vertex is on two loops) would
+    // make that edge non-manifold: then a fan closes the loop.
+    if (reuses_edge(*patch, loop, uses)) return fan_of(loop);
     return patch;
   };
   // Whatever the patches made (a fold against a kept triangle, patches meeting at a vertex of
@@ -131,14 +79,14 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   // A lone triangle (the removal cut it off) closes only with its own copy, which repair drops
   // again: a closed input's output loses it instead (below). Its loop is its own three edges,
   // so the triangle on the loop's first edge has the loop's third vertex.
-  const auto lone = [](const Loop& loop) {
+  const auto lone = [](const HoleLoop& loop) {
     return loop.vertices.size() == 3 && loop.opposite[0] == loop.vertices[2];
   };
   const bool any_lone = std::any_of(loops->begin(), loops->end(), lone);
   // Adds the patches of `these` loops; whether each had one.
   const auto patch_all = [&](const auto& these) {
     bool all = true;
-    for (const Loop& loop : these) {
+    for (const HoleLoop& loop : these) {
       const std::optional<std::vector<Triangle>> patch = patch_of(loop);
       if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());
       all = all && patch.has_value();
@@ -157,9 +105,9 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   truncate(before, vertices_before);
   if (!closed_input) return {};
   ClosedHoles closed;
-  std::vector<Loop> open;
+  std::vector<HoleLoop> open;
   std::vector<bool> dropped(mesh.triangles.size(), false);
-  for (const Loop& loop : *loops) {
+  for (const HoleLoop& loop : *loops) {
     if (!lone(loop)) {
       open.push_back(loop);
       continue;
@@ -187,7 +135,7 @@ ClosedHoles close_opened_holes(TriangleMesh& mesh, std::span<const Triangle> rem
   } else {
     truncate(kept, vertices_before);
   }
-  for (const Loop& loop : open) {
+  for (const HoleLoop& loop : open) {
     const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
     const auto closes = [&](const std::optional<std::vector<Triangle>>& patch) {
       if (patch) mesh.triangles.insert(mesh.triangles.end(), patch->begin(), patch->end());

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "cvtmesh/errors.hpp"
+#include "geometry/even_spacing.hpp"
 #include "geometry/orient_triangles.hpp"
 #include "remesh/by_component.hpp"
 #include "remesh/pipeline.hpp"
@@ -56,6 +57,10 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
     field = make_size_field(mesh, same, s, features ? &*features : nullptr, &split);
   }
   return unit_vertex_count(mesh, s, field ? &*field : nullptr);
+}
+
+double requested_edge_length(const TriangleMesh& mesh, const RemeshSettings& settings) {
+  return edge_length_for(surface_area(mesh), requested_vertex_count(mesh, settings));
 }
 
 RemeshResult remesh(const TriangleMesh& input, const RemeshSettings& settings) {

@@ -16,8 +16,8 @@ nlohmann::ordered_json percent_or_null(double distance, double diagonal) {
 
 }  // namespace
 
-MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
-                         const RemeshResult& r) {
+MeshReport remesh_report(const std::string& name, const TriangleMesh& input, const RemeshResult& r,
+                         const HoleFilling& filled) {
   MeshReport report = report_mesh(name, r.mesh, &input, r.hausdorff ? &*r.hausdorff : nullptr,
                                   &r.input_topology, &r.features);
   const double diagonal = bounding_box(input).diagonal();
@@ -43,6 +43,9 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input,
   j["islands_seeded"] = r.islands_seeded;
   j["seeds_refined"] = r.seeds_refined;
   j["triangles_removed"] = r.triangles_removed;
+  j["input_holes_filled"] = filled.filled;
+  j["input_hole_triangles_added"] = filled.triangles_added;
+  j["input_holes_left_open"] = filled.left_open;
   j["holes_closed"] = r.holes_closed;
   j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["vertices_closing_holes"] = r.vertices_closing_holes;
