@@ -805,6 +805,14 @@ TEST(Cli, FillHolesClosesTheInputsSmallHolesFirst) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["input_holes_filled"].get<int>(), 0);
   EXPECT_EQ(run_cli(dir, "remesh --vertices 300 --fill-holes 0 " + files).code, 2);
+  // `repair` fills them too, given the longest boundary in the mesh's units.
+  r = run_cli(dir, "repair --json --fill-holes 1 " + quoted(dir / "holed.off") + " " +
+                       quoted(dir / "filled.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["holes_filled"].get<int>(), 5);
+  EXPECT_EQ(j["boundary_loops"].get<int>(), 0);
+  EXPECT_EQ(j["euler_characteristic"].get<int>(), 2);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ namespace {
 
 struct RepairOptions {
   std::string input, output;
+  double fill_holes = 0;  // the longest hole boundary to fill, in the mesh's units; 0: none
   bool json = false;
 };
 
@@ -26,6 +27,13 @@ int run_repair(const RepairOptions& o) {
     throw InputError(o.input + ": no triangle with non-zero area is left after repair");
   fmt::print(stderr, "{}: {}\n", o.input,
              repairs.noteworthy() ? repairs.summary() : "nothing to repair");
+  HoleFilling filled;
+  if (o.fill_holes > 0) {
+    filled = fill_holes(mesh, o.fill_holes);
+    fmt::print(stderr, "{}: {} holes shorter than {:g} filled with {} triangles; {} left open\n",
+               o.input, filled.filled, o.fill_holes, filled.triangles_added,
+               filled.left_open + filled.larger);
+  }
   const TopologyReport topology = analyze_topology(mesh);
   warn_about_topology(o.output, topology);
   write_mesh(o.output, mesh);
@@ -38,6 +46,8 @@ int run_repair(const RepairOptions& o) {
     json["duplicate_triangles_removed"] = repairs.duplicate_triangles_removed;
     json["unreferenced_vertices_removed"] = repairs.unreferenced_vertices_removed;
     json["triangles_flipped"] = repairs.triangles_flipped;
+    json["holes_filled"] = filled.filled;
+    json["hole_triangles_added"] = filled.triangles_added;
     fmt::print("{}\n", json.dump(2));
   } else {
     fmt::print("{}: {}\n", o.output, topology_line(topology));
@@ -55,6 +65,10 @@ void add_repair_command(CLI::App& app, Action& run) {
   cmd->add_option("IN", options->input, "Input mesh")->required();
   cmd->add_option("OUT", options->output, "Output mesh (never the input; written atomically)")
       ->required();
+  cmd->add_option("--fill-holes", options->fill_holes,
+                  "Then fill the holes whose boundary is shorter than LENGTH (the mesh's units) "
+                  "on their own vertices; never a sheet's rim")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--json", options->json, "Print the repaired mesh's report as JSON");
   cmd->callback([options, &run] { run = [options] { return run_repair(*options); }; });
 }
