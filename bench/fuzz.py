@@ -19,7 +19,10 @@ list, not on --only), so a failure is reproduced by its round and name; --keep D
 failing inputs there.
 
     bench/fuzz.py [--rounds 0,1,2] [--only NAME,...] [--build build] [--data DIR] [--keep DIR]
-                  [--timeout S] [--slow S]
+                  [--timeout S] [--slow S] [--options "--fill-holes ..."]
+
+--options adds remesh options to every run (the topology is then checked against the input as
+remesh takes it: with --fill-holes, the filled input).
 
 Exit code 1 when any run failed. Needs numpy (Debian's python3-numpy).
 """
@@ -27,6 +30,7 @@ Exit code 1 when any run failed. Needs numpy (Debian's python3-numpy).
 import argparse
 import json
 import os
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -117,6 +121,7 @@ def main():
     parser.add_argument("--keep", default="")
     parser.add_argument("--timeout", type=float, default=600)
     parser.add_argument("--slow", type=float, default=20)
+    parser.add_argument("--options", default="", help="remesh options added to every run")
     args = parser.parse_args()
     cli = str(Path(args.build) / "apps" / "cvtmesh" / "cvtmesh")
     data = Path(args.data)
@@ -144,7 +149,8 @@ def main():
                 given = Path(tmp) / f"r{round_number}_{mesh.stem}.off"
                 write_off(given, points, faces)
                 cmd = [cli, "remesh", str(given), str(Path(tmp) / "out.off"), "--vertices",
-                       str(count), "--json", "--no-hausdorff", "--quiet"] + options
+                       str(count), "--json", "--no-hausdorff", "--quiet"] + options + shlex.split(
+                           args.options)
                 start = time.monotonic()
                 try:
                     r = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)

@@ -70,8 +70,9 @@ RepairReport diagnose_repairs(const TriangleMesh& mesh);
 struct HoleFilling {
   std::size_t filled = 0;           // holes closed
   std::size_t triangles_added = 0;  // the triangles that closed them
-  // Holes under the length left open: no triangulation of the loop alone has no degenerate
-  // triangle, or it would join two vertices that an edge joins already (around a thin part).
+  // Holes under the length left open: every triangulation of the loop on its own vertices has
+  // a degenerate triangle (a slit), or CGAL's would join two vertices that an edge joins
+  // already (around a thin part).
   std::size_t left_open = 0;
   std::size_t larger = 0;  // holes at or over the length, or rims (below), left open
 };

@@ -26,7 +26,7 @@ ROWS = "cvtmesh-batch.jsonl"
 # remesh() keywords the command line passes on (the CLI's names, with underscores).
 REMESH_OPTIONS = ("vertices", "edge_length", "edge_length_rel", "seed", "iterations",
                   "feature_angle", "no_features", "no_hausdorff", "time_limit",
-                  "topology_rounds", "polish_rounds")
+                  "topology_rounds", "polish_rounds", "fill_holes")
 
 
 def remesh_file(source, target, settings, threads):
@@ -188,6 +188,9 @@ def parse(argv):
     parser.add_argument("--time-limit", type=float, help="seconds per mesh")
     parser.add_argument("--topology-rounds", type=int)
     parser.add_argument("--polish-rounds", type=int)
+    parser.add_argument("--fill-holes", type=float, nargs="?", const=10.0, metavar="E",
+                        help="fill each input's holes under E edge lengths round first "
+                             "(default E: 10)")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     return parser.parse_args(argv)
 

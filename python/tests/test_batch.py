@@ -88,6 +88,16 @@ class GeneratedFolderTest(unittest.TestCase):
                           if row["status"] == "ok"},
                          {"cube.obj": 200, "fat-torus.ply": 200, "torus.off": 200})
 
+    def test_options_reach_each_remesh(self):
+        # A torus with two one-triangle holes: kept by default, filled with --fill-holes.
+        V, F = torus()
+        cvtmesh.write(os.path.join(self.source, "holed.off"), V, np.delete(F, [0, 500], axis=0))
+        batch(self.source, self.target, "--vertices", "300", "--jobs", "2", "--fill-holes")
+        found = {row["mesh"]: row for row in rows(self.target)}
+        self.assertEqual(found["holed.off"]["report"]["input_holes_filled"], 2)
+        self.assertEqual(found["holed.off"]["report"]["boundary_loops"], 0)
+        self.assertEqual(found["holed.off"]["settings"]["fill_holes"], 10)
+
     def test_dask_cluster(self):
         with local_dask_cluster() as cluster:
             run = batch(self.source, self.target, "--vertices", "300", "--scheduler",
