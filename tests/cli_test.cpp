@@ -790,6 +790,11 @@ TEST(Cli, FillHolesClosesTheInputsSmallHolesFirst) {
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["boundary_loops"].get<int>(), 5);
   EXPECT_EQ(j["input_holes_filled"].get<int>(), 0);
+  // Kept, they are pointed out with the option that closes them (not with --quiet).
+  r = run_cli(dir, "remesh --no-hausdorff --vertices 300 " + files);
+  EXPECT_NE(r.err.find("5 holes shorter than 10 edge lengths were kept"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--fill-holes"), std::string::npos) << r.err;
   r = run_cli(dir, "remesh --json --no-hausdorff --vertices 300 --fill-holes " + files);
   ASSERT_EQ(r.code, 0) << r.err;
   j = nlohmann::json::parse(r.out);

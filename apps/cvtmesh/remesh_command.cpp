@@ -33,6 +33,9 @@ struct RemeshOptions {
   bool feature_angle_given = false;
 };
 
+// --fill-holes's default, in edge lengths, and the holes the note about it counts.
+constexpr double kHoleHintEdges = 10;
+
 // "IN: 12 holes shorter than 0.42 (10 edge lengths) filled with 15 triangles; 2 left open ...".
 void print_holes_filled(const std::string& input, const HoleFilling& f, double longest,
                         double edges) {
@@ -159,6 +162,16 @@ int run_remesh(RemeshOptions o) {
                "topology, or left its boundary loops and creases too few\n",
                o.output, r.count_grown);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
+  if (o.fill_holes == 0 && !o.quiet && r.input_topology.boundary_loops > 0) {
+    // A scan's dropouts were kept, each at a cost in triangles and time: say how to close them.
+    TriangleMesh copy = input;
+    const HoleFilling would = fill_holes(copy, kHoleHintEdges * requested_edge_length(input, s));
+    if (would.filled > 0)
+      fmt::print(stderr,
+                 "{}: note: {} holes shorter than {:g} edge lengths were kept, each with small "
+                 "triangles around it; --fill-holes closes them first\n",
+                 o.input, would.filled, kHoleHintEdges);
+  }
   return kOk;
 }
 
@@ -207,7 +220,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
                   "kept would each cost many small triangles. Never a sheet's rim (a loop as "
                   "long as the square root of its part's area)")
       ->expected(0, 1)
-      ->default_str("10")
+      ->default_str(fmt::format("{:g}", kHoleHintEdges))
       ->check(CLI::PositiveNumber);
   cmd->add_option("--min-edge-length", o->settings.sizing.min_edge_length,
                   "Clamp of the target lengths (with --adaptive or --sizing)")
