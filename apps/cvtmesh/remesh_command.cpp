@@ -39,16 +39,16 @@ constexpr double kHoleHintEdges = 10;
 // "IN: 12 holes shorter than 0.42 (10 edge lengths) filled with 15 triangles; 2 left open ...".
 void print_holes_filled(const std::string& input, const HoleFilling& f, double longest,
                         double edges) {
-  std::string line = fmt::format(
-      "{}: {} holes shorter than {:.4g} ({:g} edge lengths) filled with "
-      "{} triangles",
-      input, f.filled, longest, edges, f.triangles_added);
+  std::string line =
+      fmt::format("{}: {} hole{} shorter than {:.4g} ({:g} edge lengths) filled with {} triangles",
+                  input, f.filled, f.filled == 1 ? "" : "s", longest, edges, f.triangles_added);
   if (f.left_open > 0)
     line += fmt::format(
         "; {} left open (no triangulation on their own vertices, or one that "
         "joins two vertices joined already)",
         f.left_open);
-  if (f.larger > 0) line += fmt::format("; {} larger holes and rims kept", f.larger);
+  if (f.larger > 0)
+    line += fmt::format("; {} larger hole{} and rims kept", f.larger, f.larger == 1 ? "" : "s");
   fmt::print(stderr, "{}\n", line);
 }
 
@@ -168,9 +168,11 @@ int run_remesh(RemeshOptions o) {
     const HoleFilling would = fill_holes(copy, kHoleHintEdges * requested_edge_length(input, s));
     if (would.filled > 0)
       fmt::print(stderr,
-                 "{}: note: {} holes shorter than {:g} edge lengths were kept, each with small "
-                 "triangles around it; --fill-holes closes them first\n",
-                 o.input, would.filled, kHoleHintEdges);
+                 "{}: note: {} hole{} shorter than {:g} edge lengths {} kept, with small "
+                 "triangles around {}; --fill-holes closes {} first\n",
+                 o.input, would.filled, would.filled == 1 ? "" : "s", kHoleHintEdges,
+                 would.filled == 1 ? "was" : "were", would.filled == 1 ? "it" : "each",
+                 would.filled == 1 ? "it" : "them");
   }
   return kOk;
 }

@@ -30,9 +30,9 @@ int run_repair(const RepairOptions& o) {
   HoleFilling filled;
   if (o.fill_holes > 0) {
     filled = fill_holes(mesh, o.fill_holes);
-    fmt::print(stderr, "{}: {} holes shorter than {:g} filled with {} triangles; {} left open\n",
-               o.input, filled.filled, o.fill_holes, filled.triangles_added,
-               filled.left_open + filled.larger);
+    fmt::print(stderr, "{}: {} hole{} shorter than {:g} filled with {} triangles; {} left open\n",
+               o.input, filled.filled, filled.filled == 1 ? "" : "s", o.fill_holes,
+               filled.triangles_added, filled.left_open + filled.larger);
   }
   const TopologyReport topology = analyze_topology(mesh);
   warn_about_topology(o.output, topology);
