@@ -3,8 +3,6 @@
 // loops no triangle closes stay open, each counted.
 #include <gtest/gtest.h>
 
-#include <set>
-
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"

@@ -164,8 +164,11 @@ int run_remesh(RemeshOptions o) {
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
   if (o.fill_holes == 0 && !o.quiet && r.input_topology.boundary_loops > 0) {
     // A scan's dropouts were kept, each at a cost in triangles and time: say how to close them.
+    // The even length of the output's count (a sizing's would cost the local feature size again).
+    RemeshSettings even;
+    even.vertices = std::max<std::size_t>(r.mesh.vertices.size(), 4);
     TriangleMesh copy = input;
-    const HoleFilling would = fill_holes(copy, kHoleHintEdges * requested_edge_length(input, s));
+    const HoleFilling would = fill_holes(copy, kHoleHintEdges * requested_edge_length(input, even));
     if (would.filled > 0)
       fmt::print(stderr,
                  "{}: note: {} hole{} shorter than {:g} edge lengths {} kept, with small "
