@@ -72,6 +72,23 @@ TEST(FillHoles, NeverCapsASheetsRim) {
   }
 }
 
+TEST(FillHoles, SaysSoWhereTheLoopsAreNotDefined) {
+  // A sphere with a one-triangle hole, and a bowtie: two triangles meeting at one vertex, which
+  // has two boundary edges leaving it.
+  TriangleMesh m = with_one_triangle_holes(icosphere(2), 1, 7);
+  const auto v = static_cast<Index>(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), {{3, 0, 0}, {4, 0, 0}, {4, 1, 0}, {2, 0, 0}, {2, -1, 0}});
+  m.triangles.push_back({v, v + 1, v + 2});
+  m.triangles.push_back({v, v + 3, v + 4});
+  const TriangleMesh before = m;
+  const HoleFilling f = fill_holes(m, 1e9);
+  EXPECT_TRUE(f.loops_undefined);
+  EXPECT_EQ(f.filled, 0u);
+  EXPECT_EQ(m.triangles, before.triangles);
+  m = with_one_triangle_holes(icosphere(2), 1, 7);
+  EXPECT_FALSE(fill_holes(m, 1e9).loops_undefined);
+}
+
 TEST(FillHoles, LeavesASlitNoTriangleClosesOpen) {
   // A flat square 22 wide, cut along a slit from (0, 0) to (2, 0) whose two sides share their
   // ends: the loop a0 a1 a2 a3 has no area, and every triangle on it would be degenerate.

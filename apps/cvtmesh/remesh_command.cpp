@@ -47,6 +47,8 @@ void print_holes_filled(const std::string& input, const HoleFilling& f, double l
         "; {} left open (no triangulation on their own vertices, or one that "
         "joins two vertices joined already)",
         f.left_open);
+  if (f.loops_undefined)
+    line += " (two fans of triangles meet at a vertex of the boundary: its loops are not defined)";
   if (f.larger > 0)
     line += fmt::format("; {} larger hole{} and rims kept", f.larger, f.larger == 1 ? "" : "s");
   fmt::print(stderr, "{}\n", line);

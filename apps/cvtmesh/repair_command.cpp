@@ -33,6 +33,11 @@ int run_repair(const RepairOptions& o) {
     fmt::print(stderr, "{}: {} hole{} shorter than {:g} filled with {} triangles; {} left open\n",
                o.input, filled.filled, filled.filled == 1 ? "" : "s", o.fill_holes,
                filled.triangles_added, filled.left_open + filled.larger);
+    if (filled.loops_undefined)
+      fmt::print(stderr,
+                 "{}: no hole filled: two fans of triangles meet at a vertex of the boundary, "
+                 "where its loops are not defined\n",
+                 o.input);
   }
   const TopologyReport topology = analyze_topology(mesh);
   warn_about_topology(o.output, topology);

@@ -75,6 +75,9 @@ struct HoleFilling {
   // already (around a thin part).
   std::size_t left_open = 0;
   std::size_t larger = 0;  // holes at or over the length, or rims (below), left open
+  // A vertex has two boundary edges leaving it (two fans meeting at a point): no loop is
+  // defined, and none was filled.
+  bool loops_undefined = false;
 };
 
 // Closes each boundary loop of `mesh` shorter than `max_perimeter` (in the mesh's units) with
@@ -83,8 +86,9 @@ struct HoleFilling {
 // A loop at least as long as the square root of its component's area is the rim of a sheet, not
 // a hole in it, and stays open whatever the length: a patch over a disc's rim would double it.
 // For a mesh that repair_mesh() made: a vertex with two boundary edges leaving it (which repair
-// keeps as one copy per fan) leaves every loop open. Deterministic. InvalidArgument for a
-// negative or NaN length.
+// keeps as one copy per fan when it merges duplicates, but leaves as it is when the file has it
+// so) leaves every loop open (loops_undefined). Deterministic. InvalidArgument for a negative or
+// NaN length.
 HoleFilling fill_holes(TriangleMesh& mesh, double max_perimeter);
 
 }  // namespace cvtmesh

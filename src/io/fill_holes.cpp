@@ -48,7 +48,10 @@ HoleFilling fill_holes(TriangleMesh& mesh, double max_perimeter) {
   HoleFilling report;
   const std::vector<EdgeUse> uses = edge_uses(mesh);
   const std::optional<std::vector<HoleLoop>> loops = hole_loops(mesh, uses);
-  if (!loops) return report;
+  if (!loops) {
+    report.loops_undefined = true;
+    return report;
+  }
   const std::vector<double> area = component_areas(mesh);
   std::vector<Triangle> added;
   for (const HoleLoop& loop : *loops) {
