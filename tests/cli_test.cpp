@@ -537,6 +537,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "links_flipped",
                           "tips_closed",
                           "flat_ears_removed",
+                          "input_crossing_triangles",
                           "mend_rounds",
                           "shape_flips",
                           "shape_moves",

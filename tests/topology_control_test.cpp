@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <random>
 
 #include "cvt/cell_islands.hpp"
@@ -1054,6 +1055,41 @@ TEST(HardCases, ATubeTooThinForTheCountAskedForGetsMoreVertices) {
     EXPECT_LE(r.count_grown, 3 * 60u);  // at most 4 times the count
     EXPECT_GE(r.mesh.vertices.size(), 60 + r.count_grown);
   }
+}
+
+// A torus whose tube narrows from radius 0.3 to 0.003 (nu steps round, nv about): thick on one
+// side, a hundred times thinner on the other.
+TriangleMesh tapered_torus(int nu, int nv) {
+  TriangleMesh m;
+  const double tau = 2 * std::numbers::pi;
+  for (int i = 0; i < nu; ++i) {
+    const double u = tau * i / nu;
+    const double r = 0.003 + (0.3 - 0.003) * (0.5 + 0.5 * std::cos(u));
+    for (int j = 0; j < nv; ++j) {
+      const double v = tau * j / nv;
+      m.vertices.push_back({(1 + r * std::cos(v)) * std::cos(u),
+                            (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v)});
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
+// Where even sizes lose the topology at four times the count too, adaptive ones are tried at
+// that count, last: the tapered torus at 60 vertices keeps its genus only so (before, the even
+// outputs at 60, 120 and 240 all cut its thin side, and the one at 60 was returned).
+TEST(HardCases, ATubeThatNarrowsFarBelowTheSpacingGetsAdaptiveSizesAtTheGrownCount) {
+  const TriangleMesh ring = tapered_torus(600, 16);
+  const RemeshResult r = remesh_with_seed(ring, 60, 1);
+  expect_topology_kept(r, ring);
+  EXPECT_TRUE(r.sizes_adapted);
+  EXPECT_EQ(r.count_grown, 3 * 60u);  // at four times the count
+  EXPECT_GE(r.mesh.vertices.size(), 60 + r.count_grown);
 }
 
 // Adaptive sizes grow with the count too: the same tube at 60, adaptive, kept its genus only once

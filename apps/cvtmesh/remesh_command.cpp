@@ -164,6 +164,13 @@ int run_remesh(RemeshOptions o) {
                "topology, or left its boundary loops and creases too few\n",
                o.output, r.count_grown);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
+  if (r.input_crossing_triangles > 0 && !report.same_topology_as_reference)
+    fmt::print(stderr,
+               "{}: warning: the input passes through itself ({} triangle{} cross{} another): no "
+               "vertex count tells sheets that cross apart, so the output's topology there is not "
+               "the input's\n",
+               o.input, r.input_crossing_triangles, r.input_crossing_triangles == 1 ? "" : "s",
+               r.input_crossing_triangles == 1 ? "es" : "");
   if (o.fill_holes == 0 && !o.quiet && r.input_topology.boundary_loops > 0) {
     // A scan's dropouts were kept, each at a cost in triangles and time: say how to close them.
     // The even length of the output's count (a sizing's would cost the local feature size again).

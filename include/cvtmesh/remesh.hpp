@@ -115,7 +115,8 @@ struct RemeshResult {
   std::vector<Edge> feature_edges_dropped;
   // Uniform sizes gave way (issue 18: validity first): the output of even edge lengths did not
   // keep the input's topology, and one remeshed again with adaptive sizes (SizingSettings's
-  // local feature size, the same count) did. False when the sizes were the caller's.
+  // local feature size, at the same count or at a grown one: see count_grown) was kept. False
+  // when the sizes were the caller's.
   bool sizes_adapted = false;
   // Even sizes graded down towards feature gaps narrower than them (SizingSettings::
   // gap_gradation: a hole smaller than an edge, a slot, a thin strip): the shortest target
@@ -123,8 +124,9 @@ struct RemeshResult {
   // caller's).
   double gap_length_min = 0;
   // Vertices asked for on top of the count requested, where neither topology control nor
-  // adaptive sizes kept the input's topology: the count doubled, at most twice (issue 18 item 2:
-  // the count grows for the topology alone); or where the features (boundary loops, creases)
+  // adaptive sizes kept the input's topology: the count doubled, at most twice, with adaptive
+  // sizes unless the caller's were given (issue 18 item 2: the count grows for the topology
+  // alone); or where the features (boundary loops, creases)
   // needed more seeds of their own than the count left (many small holes, with sizes graded down
   // to them): the count grew to twice their need. 0 when the count asked for sufficed.
   std::size_t count_grown = 0;
@@ -155,6 +157,11 @@ struct RemeshResult {
   std::size_t triangles_removed = 0;
   std::size_t holes_closed = 0, triangles_closing_holes = 0;
   std::size_t vertices_closing_holes = 0;  // centres of holes closed by a fan
+  // Input triangles that pass through another of their component, found where an output lacked
+  // the input's topology (0 when none, or when no output did): sheets that cross share their
+  // cells at any spacing, so the topology there cannot be the input's, and the rounds stop
+  // refining there.
+  std::size_t input_crossing_triangles = 0;
   // Flat or folded ears removed at the boundary (finish/flat_ears): triangles whose two edges at
   // one vertex, not a corner, were boundary edges meeting at 160° or more (120° at a vertex that
   // is no seed: a cell's far piece), or that folded back more than 120° over their neighbour

@@ -203,7 +203,7 @@ def remesh_lines(remesh):
     keys = ["feature_edges_in", "feature_edges_out", "feature_edges_missing",
             "feature_edges_dropped", "sizes_adapted", "count_grown", "corners_in",
             "corners_out", "feature_hausdorff_max_pct", "seeds_added", "islands_seeded",
-            "seeds_refined", "links_mended", "triangles_removed", "holes_closed", "vertices_closing_holes",
+            "seeds_refined", "links_mended", "triangles_removed", "holes_closed", "vertices_closing_holes", "input_crossing_triangles",
             "flat_ears_removed", "valence_three_removed", "obtuse_corners_split",
             "short_edges_collapsed",
             "mend_rounds", "time_s"]

@@ -69,8 +69,8 @@ std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
   return crossing;
 }
 
-std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh) {
-  const std::vector<bool> crossing = self_crossing_triangles(mesh);
+std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh,
+                                                   const std::vector<bool>& crossing) {
   TriangleMesh part{mesh.vertices, {}};
   for (std::size_t t = 0; t < crossing.size(); ++t)
     if (crossing[t]) part.triangles.push_back(mesh.triangles[t]);

@@ -16,7 +16,9 @@ namespace cvtmesh {
 // edge are not tested: their overlap would be a fold, not a crossing.
 std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh);
 
-// Those triangles as a surface to measure distances to, or null where there are none.
-std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh);
+// The triangles of `mesh` flagged in `crossing` (as self_crossing_triangles gives them) as a
+// surface to measure distances to, or null where none is.
+std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh,
+                                                   const std::vector<bool>& crossing);
 
 }  // namespace cvtmesh

@@ -303,6 +303,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.holes_closed += part.holes_closed;
   all.triangles_closing_holes += part.triangles_closing_holes;
   all.vertices_closing_holes += part.vertices_closing_holes;
+  all.input_crossing_triangles += part.input_crossing_triangles;
   all.flat_ears_removed += part.flat_ears_removed;
   all.valence_three_removed += part.valence_three_removed;
   all.obtuse_corners_split += part.obtuse_corners_split;

@@ -150,17 +150,21 @@ class Crossings {
   // The crossings, searched on the first call; null where there are none.
   const SurfaceProjector* get() {
     if (!searched_) {
-      found_ = crossing_surface(surface_);
+      const std::vector<bool> crossing = self_crossing_triangles(surface_);
+      count_ = static_cast<std::size_t>(std::count(crossing.begin(), crossing.end(), true));
+      found_ = crossing_surface(surface_, crossing);
       searched_ = true;
     }
     return found_.get();
   }
-  // Whether a search found any.
+  // Whether a search found any; how many triangles cross another (0 before a search).
   bool found() const { return found_ != nullptr; }
+  std::size_t count() const { return count_; }
 
  private:
   const TriangleMesh& surface_;
   bool searched_ = false;
+  std::size_t count_ = 0;
   std::unique_ptr<SurfaceProjector> found_;
 };
 
@@ -317,6 +321,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   seeds = std::move(best.seeds);
   constraints = std::move(best.constraints);
   report = best.report;
+  report.crossing_triangles = crossings.count();
   report.links_flipped = best.assessment.links_flipped;
   report.tips_closed = best.assessment.tips_closed;
   return output;

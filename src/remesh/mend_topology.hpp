@@ -30,6 +30,9 @@ struct MendReport {
   std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_wedges)
   int rounds = 0;                 // rounds that changed the seeds
   int polish_rounds = 0;          // polishing rounds over all the extractions after the first
+  // Input triangles that cross another, searched once an output lacked the input's topology
+  // (0 otherwise): where sheets cross, no seed tells them apart.
+  std::size_t crossing_triangles = 0;
 };
 
 // Up to `rounds` times, while the output misses links of the feature chains, or its topology

@@ -293,6 +293,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.links_flipped = mends.links_flipped;
   result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
+  result.input_crossing_triangles = mends.crossing_triangles;
   // The guaranteed last step (issue 18 item 1): whatever defect the rounds left goes, leaving a
   // manifold. Only for a manifold input: a non-manifold input edge is a feature the output keeps.
   const auto last_start = Clock::now();

@@ -47,6 +47,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["input_hole_triangles_added"] = filled.triangles_added;
   j["input_holes_left_open"] = filled.left_open;
   j["holes_closed"] = r.holes_closed;
+  j["input_crossing_triangles"] = r.input_crossing_triangles;
   j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
@@ -145,6 +146,9 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
         "  last step {} triangles removed at defects the rounds left; {} holes closed with {} "
         "triangles and {} new vertices\n",
         r.triangles_removed, r.holes_closed, r.triangles_closing_holes, r.vertices_closing_holes);
+  if (r.input_crossing_triangles > 0)
+    text +=
+        fmt::format("  input     {} triangles pass through others\n", r.input_crossing_triangles);
   return report;
 }
 
