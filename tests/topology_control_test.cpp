@@ -16,6 +16,7 @@
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
+#include "cvtmesh/report.hpp"
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
@@ -1082,14 +1083,44 @@ TriangleMesh tapered_torus(int nu, int nv) {
 
 // Where even sizes lose the topology at four times the count too, adaptive ones are tried at
 // that count, last: the tapered torus at 60 vertices keeps its genus only so (before, the even
-// outputs at 60, 120 and 240 all cut its thin side, and the one at 60 was returned).
+// outputs at 60, 120 and 240 all cut its thin side, and the one at 60 was returned). The
+// progress callback hears of each round of topology control that adds seeds and of each redo.
 TEST(HardCases, ATubeThatNarrowsFarBelowTheSpacingGetsAdaptiveSizesAtTheGrownCount) {
   const TriangleMesh ring = tapered_torus(600, 16);
-  const RemeshResult r = remesh_with_seed(ring, 60, 1);
+  RemeshSettings s;
+  s.vertices = 60;
+  s.hausdorff.reset();
+  std::vector<RemeshProgress> heard;
+  s.progress = [&](const RemeshProgress& p) {
+    if (p.phase == std::string("topology") || p.phase == std::string("redo")) heard.push_back(p);
+  };
+  const RemeshResult r = remesh(ring, s);
   expect_topology_kept(r, ring);
   EXPECT_TRUE(r.sizes_adapted);
   EXPECT_EQ(r.count_grown, 3 * 60u);  // at four times the count
   EXPECT_GE(r.mesh.vertices.size(), 60 + r.count_grown);
+  // Redone with adaptive sizes at 60, at 120 and 240 with even ones, at 240 with adaptive ones.
+  std::vector<std::pair<std::size_t, std::string>> redos;
+  std::string last_redo;
+  for (const RemeshProgress& p : heard)
+    if (p.phase == std::string("redo")) {
+      redos.push_back({p.seeds, p.detail});
+      last_redo = progress_line(p);
+    }
+  const std::vector<std::pair<std::size_t, std::string>> expected{
+      {60, "with adaptive sizes"},
+      {120, "with more vertices"},
+      {240, "with more vertices"},
+      {240, "with more vertices, adaptive sizes"}};
+  EXPECT_EQ(redos, expected);
+  ASSERT_FALSE(heard.empty());
+  EXPECT_EQ(heard.front().phase, std::string("topology"));
+  EXPECT_EQ(heard.front().iteration, 1);
+  EXPECT_GT(heard.front().seeds, 60u);  // the first round's seeds came in
+  EXPECT_NE(progress_line(heard.front()).find("topology"), std::string::npos);
+  EXPECT_NE(last_redo.find("again at 240 vertices, with more vertices, adaptive"),
+            std::string::npos)
+      << last_redo;
 }
 
 // Adaptive sizes grow with the count too: the same tube at 60, adaptive, kept its genus only once

@@ -112,10 +112,7 @@ int run_remesh(RemeshOptions o) {
     else
       fmt::print(stderr, "{}: {} triangles -> {} vertices\n", o.input, input.triangles.size(),
                  requested_vertex_count(input, s));
-    s.progress = [](const RemeshProgress& p) {
-      fmt::print(stderr, "  {} {:4d}  energy {:.9e}  |grad| {:.3e}  {:7.2f}s\n", p.phase,
-                 p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds);
-    };
+    s.progress = [](const RemeshProgress& p) { fmt::print(stderr, "{}", progress_line(p)); };
   }
   if (!o.no_hausdorff) s.hausdorff = HausdorffSettings{.samples = o.samples};
   install_interrupt_handler();

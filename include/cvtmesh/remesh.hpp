@@ -21,10 +21,19 @@ namespace cvtmesh {
 enum class Optimizer { lbfgs, lloyd };
 enum class CvtMode { rcvt, ccvt, both };
 
+// What a remesh is doing, for progress output. `phase`:
+// - "rcvt", "ccvt", "ccvt-surface": an iteration of the CVT, with its energy and gradient norm;
+// - "topology": a round of topology control (paper §4.4) that added seeds: `iteration` the
+//   round, `seeds` the seeds after it, `defects` the triangles at defects that it seeded;
+// - "redo": the output lost the input's topology, and the remesh starts again (issue 18):
+//   `iteration` the try (2, 3, ...), `seeds` its vertex count, `detail` how it differs.
+// elapsed_seconds counts from the start of the current try.
 struct RemeshProgress {
-  const char* phase;  // "rcvt" or "ccvt"
+  const char* phase;
   int iteration;
   double energy, gradient_norm, elapsed_seconds;
+  std::size_t seeds = 0, defects = 0;
+  const char* detail = "";
 };
 
 struct RemeshSettings {
@@ -43,7 +52,8 @@ struct RemeshSettings {
   CvtMode mode = CvtMode::both;
   std::uint64_t seed = 1;           // random initial seeds: same seed, same output
   std::vector<Vec3> initial_seeds;  // if not empty: used instead of spread ones
-  std::function<void(const RemeshProgress&)> progress;  // called once per iteration
+  // Called once per iteration, per round of topology control that adds seeds, and per redo.
+  std::function<void(const RemeshProgress&)> progress;
   // Polled often (every few milliseconds of work), from any of the worker threads: when it
   // returns true, remesh stops and throws Cancelled. Must be thread-safe and cheap.
   std::function<bool()> cancel;
@@ -124,11 +134,11 @@ struct RemeshResult {
   // caller's).
   double gap_length_min = 0;
   // Vertices asked for on top of the count requested, where neither topology control nor
-  // adaptive sizes kept the input's topology: the count doubled, at most twice, with adaptive
-  // sizes unless the caller's were given (issue 18 item 2: the count grows for the topology
-  // alone); or where the features (boundary loops, creases)
-  // needed more seeds of their own than the count left (many small holes, with sizes graded down
-  // to them): the count grew to twice their need. 0 when the count asked for sufficed.
+  // adaptive sizes kept the input's topology: the count doubled, at most twice, and where even
+  // sizes lost it at four times the count too, adaptive ones at that count (issue 18 item 2: the
+  // count grows for the topology alone); or where the features (boundary loops, creases) needed
+  // more seeds of their own than the count left (many small holes, with sizes graded down to
+  // them): the count grew to twice their need. 0 when the count asked for sufficed.
   std::size_t count_grown = 0;
   // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had

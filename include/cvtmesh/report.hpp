@@ -21,6 +21,9 @@ void add_reference_json(nlohmann::ordered_json& json, const HausdorffReport* dis
                         const TopologyReport& reference, bool same);
 
 std::string topology_line(const TopologyReport& t);
+// One line (with its newline) for a remesh's progress callback, as the CLI prints it: an
+// iteration's energy and gradient, a round of topology control's seeds, or a redo's reason.
+std::string progress_line(const RemeshProgress& p);
 std::string quality_lines(const QualityReport& q);
 std::string hausdorff_lines(const HausdorffReport* h, const TopologyReport& self,
                             const TopologyReport& reference);

@@ -144,10 +144,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<std::si
   if (progress || !quiet)
     s.progress = [&](const RemeshProgress& p) {
       hooks.with_gil([&] {
-        if (!quiet)
-          py::module_::import("sys").attr("stderr").attr("write")(
-              py::str("  {} {:4d}  energy {:.9e}  |grad| {:.3e}  {:7.2f}s\n")
-                  .format(p.phase, p.iteration, p.energy, p.gradient_norm, p.elapsed_seconds));
+        if (!quiet) py::module_::import("sys").attr("stderr").attr("write")(progress_line(p));
         if (progress) progress(p);
       });
     };
@@ -270,14 +267,23 @@ The GIL is released while the library works.)";
 }  // namespace
 
 void add_remesh(py::module_& m) {
-  py::class_<RemeshProgress>(m, "RemeshProgress", "One iteration of cvtmesh.remesh.")
+  py::class_<RemeshProgress>(m, "RemeshProgress",
+                             "One iteration of cvtmesh.remesh, round of topology control or redo.")
       .def_property_readonly(
           "phase", [](const RemeshProgress& p) { return std::string(p.phase); },
-          "\"rcvt\" or \"ccvt\"")
+          "\"rcvt\", \"ccvt\", \"ccvt-surface\" (an iteration), \"topology\" (a round that added "
+          "seeds) or \"redo\" (the topology was lost: the remesh starts again)")
       .def_readonly("iteration", &RemeshProgress::iteration)
       .def_readonly("energy", &RemeshProgress::energy, "CVT energy (at unit size)")
       .def_readonly("gradient_norm", &RemeshProgress::gradient_norm)
       .def_readonly("elapsed_seconds", &RemeshProgress::elapsed_seconds)
+      .def_readonly("seeds", &RemeshProgress::seeds,
+                    "topology: the seeds after the round; redo: its vertex count (0: from sizes)")
+      .def_readonly("defects", &RemeshProgress::defects,
+                    "topology: the triangles at defects the round seeded")
+      .def_property_readonly(
+          "detail", [](const RemeshProgress& p) { return std::string(p.detail); },
+          "redo: how the new try differs")
       .def("__repr__", [](const RemeshProgress& p) {
         return "RemeshProgress(phase='" + std::string(p.phase) +
                "', iteration=" + std::to_string(p.iteration) +

@@ -142,6 +142,8 @@ class RemeshTest(unittest.TestCase):
         # "ccvt" too: Remesh.AFeatureFreeSurfaceSpendsBothPhasesOnRcvt in the C++ tests).
         self.assertEqual({p.phase for p in seen}, {"rcvt"})
         self.assertTrue(all(p.energy > 0 and p.elapsed_seconds >= 0 for p in seen))
+        # Only a round of topology control ("topology") or a redo ("redo") fills these.
+        self.assertTrue(all(p.seeds == 0 and p.defects == 0 and p.detail == "" for p in seen))
 
     def test_an_exception_in_the_callback_stops_the_remesh(self):
         def stop(p):

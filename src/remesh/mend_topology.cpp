@@ -8,6 +8,7 @@
 #include "geometry/self_crossings.hpp"
 #include "geometry/surface_projector.hpp"
 #include "remesh/assess_extraction.hpp"
+#include "system/elapsed.hpp"
 
 namespace cvtmesh {
 
@@ -298,6 +299,9 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       added = seed_where_it_fails(m, a, vertex_seed, stops.pinned(), crossings, seeds, constraints,
                                   report);
     stops.added(added);
+    if (added > 0 && m.progress && *m.progress)
+      (*m.progress)({"topology", round + 1, 0, 0, seconds_since(m.start), seeds.size(),
+                     a.defects.triangles.size()});
     if (added == 0) {
       if (stops.pinned() || rounds == 0 || kept.best().assessment.topology_kept ||
           !m.surface_topology.is_manifold())

@@ -3,9 +3,12 @@
 // not, seeds are moved or added there, and the output is made again.
 #pragma once
 
+#include <chrono>
+#include <functional>
 #include <vector>
 
 #include "cvt/polish_defects.hpp"
+#include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
 
 namespace cvtmesh {
@@ -20,6 +23,10 @@ struct MendContext {
   const CurveSpacing& spacing;    // target edge lengths along the curves
   PolishSettings polish;
   TraversalMemory& traversals;  // the last traversal of `surface` (see extract_polished)
+  // Told of each round that adds seeds (RemeshSettings::progress; null: nobody), with the time
+  // since `start`.
+  const std::function<void(const RemeshProgress&)>* progress = nullptr;
+  std::chrono::steady_clock::time_point start{};
 };
 
 struct MendReport {

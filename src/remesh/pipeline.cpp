@@ -277,9 +277,12 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     result.polish_rounds = output.rounds;
     result.defects_polished = output.defects;
     // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
-    const MendContext context{
-        mesh,           result.input_topology,    features,  *curves, *projector, placement,
-        *curve_spacing, {settings.polish_rounds}, traversals};
+    const MendContext context{mesh,           result.input_topology,
+                              features,       *curves,
+                              *projector,     placement,
+                              *curve_spacing, {settings.polish_rounds},
+                              traversals,     &settings.progress,
+                              start};
     const auto mend_start = Clock::now();
     output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
                            mends);

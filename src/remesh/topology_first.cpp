@@ -43,14 +43,20 @@ double seconds_of(const RemeshResult& r) {
 
 // remesh_unit again with `settings`, within what is left of their time limit after `start`;
 // none if nothing is left, or if these settings cannot be met (a redo's features needing more
-// vertices than its count, say): a second try never turns an output into an error.
+// vertices than its count, say): a second try never turns an output into an error. The
+// progress callback is told first (`detail`: how this try differs; `tries`: the tries so far,
+// counted up).
 std::optional<UnitRemesh> retried(const TriangleMesh& input, RemeshSettings settings,
-                                  std::chrono::steady_clock::time_point start) {
+                                  std::chrono::steady_clock::time_point start, const char* detail,
+                                  int& tries) {
   if (settings.time_limit > 0) {
     const double spent = seconds_since(start);
     if (spent >= settings.time_limit) return std::nullopt;
     settings.time_limit -= spent;
   }
+  ++tries;
+  if (settings.progress)
+    settings.progress({"redo", tries, 0, 0, seconds_since(start), settings.vertices, 0, detail});
   try {
     return remesh_unit(input, settings);
   } catch (const InvalidArgument&) {
@@ -123,6 +129,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   // The settings of the output kept so far.
   RemeshSettings used = settings;
   UnitRemesh best = first_remesh(input, used);
+  int tries = 1;
   if (settings.mode == CvtMode::rcvt || best.result.time_limit_reached ||
       topology_kept(best.result) == 2)
     return best;
@@ -135,7 +142,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
     std::set_difference(best.result.features.edges.begin(), best.result.features.edges.end(),
                         kept.edges.begin(), kept.edges.end(), std::back_inserter(dropped));
     std::optional<UnitRemesh> second;
-    if (!dropped.empty()) second = retried(input, plain, start);
+    if (!dropped.empty()) second = retried(input, plain, start, "without the sharp creases", tries);
     if (second) {
       second->result.feature_edges_dropped = std::move(dropped);
       if (take_better(best, std::move(*second))) used = plain;
@@ -157,7 +164,8 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   if (!used.sizing.active()) {
     RemeshSettings adapted = used;
     adapted.sizing.adaptive = kFallbackGradation;
-    if (std::optional<UnitRemesh> third = retried(input, adapted, start)) {
+    if (std::optional<UnitRemesh> third =
+            retried(input, adapted, start, "with adaptive sizes", tries)) {
       third->result.sizes_adapted = true;
       third->result.feature_edges_dropped = best.result.feature_edges_dropped;
       take_better(best, std::move(*third));
@@ -177,7 +185,7 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
                          !best.result.time_limit_reached;
        ++doubling) {
     more.vertices *= 2;
-    std::optional<UnitRemesh> next = retried(input, more, start);
+    std::optional<UnitRemesh> next = retried(input, more, start, "with more vertices", tries);
     if (!next) continue;
     next->result.count_grown = more.vertices - asked;
     next->result.feature_edges_dropped = best.result.feature_edges_dropped;
@@ -192,7 +200,8 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   if (!settings.sizing.active() && !used.sizing.active() && topology_kept(best.result) == 0 &&
       !best.result.time_limit_reached) {
     more.sizing.adaptive = kFallbackGradation;
-    if (std::optional<UnitRemesh> adapted = retried(input, more, start)) {
+    if (std::optional<UnitRemesh> adapted =
+            retried(input, more, start, "with more vertices, adaptive sizes", tries)) {
       adapted->result.count_grown = more.vertices - asked;
       adapted->result.sizes_adapted = true;
       adapted->result.feature_edges_dropped = best.result.feature_edges_dropped;
