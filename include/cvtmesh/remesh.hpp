@@ -134,9 +134,9 @@ struct RemeshResult {
   // caller's).
   double gap_length_min = 0;
   // Vertices asked for on top of the count requested, where neither topology control nor
-  // adaptive sizes kept the input's topology: the count doubled, at most twice, and where even
-  // sizes lost it at four times the count too, adaptive ones at that count (issue 18 item 2: the
-  // count grows for the topology alone); or where the features (boundary loops, creases) needed
+  // adaptive sizes kept the input's topology: the count doubled, at most twice, with even sizes
+  // and, where those lost it again, adaptive ones at the same count (issue 18 item 2: the count
+  // grows for the topology alone); or where the features (boundary loops, creases) needed
   // more seeds of their own than the count left (many small holes, with sizes graded down to
   // them): the count grew to twice their need. 0 when the count asked for sufficed.
   std::size_t count_grown = 0;
