@@ -138,8 +138,11 @@ int run_remesh(RemeshOptions o) {
   else if (r.triangles_removed > 0)
     fmt::print(stderr,
                "{}: warning: {} triangles removed where the triangulation was not a manifold and "
-               "topology control could not mend it (more vertices would resolve the thin parts)\n",
-               o.output, r.triangles_removed);
+               "topology control could not mend it ({})\n",
+               o.output, r.triangles_removed,
+               r.input_crossing_triangles > 0 ? "where the input crosses itself, or parts are "
+                                                "thinner than the spacing"
+                                              : "more vertices would resolve the thin parts");
   else if (r.holes_closed > 0)
     fmt::print(stderr,
                "{}: warning: {} holes that topology control left in the closed surface were "
