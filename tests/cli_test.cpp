@@ -289,6 +289,20 @@ TEST(Cli, RemeshOfAPartWhoseCopiesOfAVertexDifferByRoundingIsClosed) {
   EXPECT_GE(j["angle_min_deg"].get<double>(), 30);
 }
 
+TEST(Cli, RemeshOfABoxWithATJunctionStitchedByZeroAreaTrianglesIsClosed) {
+  // Dropping the caps would have opened a slit, remeshed as a boundary loop.
+  TempDir dir;
+  write_mesh(dir / "box.off", with_t_junction(cube(4), 7, 3));
+  const CliRun r = run_cli(dir, "remesh --json --quiet --vertices 400 " + quoted(dir / "box.off") +
+                                    " " + quoted(dir / "out.off"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("3 zero-area triangles split out"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["boundary_loops"], 0);
+  EXPECT_EQ(j["euler_characteristic"], 2);
+  EXPECT_EQ(j["same_topology"], true);
+}
+
 TEST(Cli, RepairNeverWritesOverItsInput) {
   TempDir dir;
   write_mesh(dir / "in.off", icosphere(1));

@@ -7,6 +7,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
+#include "geometry/orient_triangles.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
@@ -195,6 +196,52 @@ TEST(Repair, DropsZeroAreaTriangles) {
   EXPECT_EQ(r.degenerate_triangles_removed, 2u);
   EXPECT_EQ(r.unreferenced_vertices_removed, 3u);
   EXPECT_EQ(m.triangles.size(), n);
+}
+
+TEST(Repair, SplitsOutCapsThatStitchATJunctionAndKeepsTheSurfaceClosed) {
+  // Dropped, the caps would leave a slit: a boundary loop the closed box never had.
+  for (const int points : {1, 3}) {
+    TriangleMesh m = with_t_junction(cube(4), 7, points);
+    ASSERT_EQ(analyze_topology(m).boundary_loops, 0u);
+    const RepairReport r = repair_mesh(m);
+    EXPECT_EQ(r.caps_split, static_cast<std::size_t>(points));
+    EXPECT_EQ(r.degenerate_triangles_removed, 0u);
+    EXPECT_NE(r.summary().find("zero-area triangles split out"), std::string::npos);
+    const TopologyReport t = analyze_topology(m);
+    EXPECT_TRUE(t.is_manifold());
+    EXPECT_EQ(t.components, 1u);
+    EXPECT_EQ(t.boundary_loops, 0u);
+    EXPECT_EQ(t.euler_characteristic, 2);
+    EXPECT_TRUE(triangles_to_flip(m).empty());    // the halves keep their triangle's orientation
+    EXPECT_FALSE(diagnose_repairs(m).changed());  // no zero-area triangle is left
+    EXPECT_NEAR(surface_area(m), surface_area(cube(4)), 1e-12);
+  }
+}
+
+TEST(Repair, DropsCapsWhoseSplitWouldLeaveTheSurfaceLessManifold) {
+  // Two triangles below a line and two above, joined only by a strip of zero-area triangles
+  // along it: split out, the one cap with a triangle across its long edge would put a vertex
+  // of the line in both parts, which touch there once the strip is dropped.
+  TriangleMesh m;
+  m.vertices = {{2, -1, 0},  {3, 0, 0},   {2, 0, 0},   {1, 0, 0},
+                {0.5, 0, 0}, {1.5, 0, 0}, {2.5, 0, 0}, {1.5, 1, 0}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}, {2, 1, 6},
+                 {2, 6, 4}, {4, 6, 5}, {5, 6, 7}, {4, 5, 7}};
+  const RepairReport r = repair_mesh(m);
+  EXPECT_EQ(r.caps_split, 0u);
+  EXPECT_EQ(r.degenerate_triangles_removed, 4u);
+  EXPECT_TRUE(analyze_topology(m).is_manifold());
+}
+
+TEST(Repair, DropsACapWhoseLongEdgeHasNoOtherTriangle) {
+  // On the boundary, dropping it opens nothing: the loop runs along its two short edges instead.
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0.5, 0, 0}, {0.5, 1, 0}};
+  m.triangles = {{0, 2, 3}, {2, 1, 3}, {0, 1, 2}};
+  const RepairReport r = repair_mesh(m);
+  EXPECT_EQ(r.caps_split, 0u);
+  EXPECT_EQ(r.degenerate_triangles_removed, 1u);
+  EXPECT_EQ(analyze_topology(m).boundary_loops, 1u);
 }
 
 TEST(Repair, KeepsNearlyDegenerateTriangles) {

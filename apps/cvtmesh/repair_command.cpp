@@ -47,6 +47,7 @@ int run_repair(const RepairOptions& o) {
     json["duplicate_vertices_merged"] = repairs.duplicate_vertices_merged;
     json["nearly_equal_vertices_merged"] = repairs.nearly_equal_vertices_merged;
     json["duplicate_vertices_kept_apart"] = repairs.duplicate_vertices_kept_apart;
+    json["caps_split"] = repairs.caps_split;
     json["degenerate_triangles_removed"] = repairs.degenerate_triangles_removed;
     json["duplicate_triangles_removed"] = repairs.duplicate_triangles_removed;
     json["unreferenced_vertices_removed"] = repairs.unreferenced_vertices_removed;

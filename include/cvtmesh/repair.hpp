@@ -17,15 +17,20 @@ struct RepairReport {
   std::size_t nearly_equal_vertices_merged = 0;  // of those, the ones not exactly equal
   // Duplicates not merged, because the merge would have made a non-manifold edge or vertex.
   std::size_t duplicate_vertices_kept_apart = 0;
-  std::size_t degenerate_triangles_removed = 0;  // zero area (repeated or collinear corners)
-  std::size_t duplicate_triangles_removed = 0;   // same three vertices, any order or orientation
+  // Zero-area triangles with one corner strictly inside their long edge, whose removal would
+  // open a slit: instead the triangle across that edge is split at that corner (split_caps).
+  std::size_t caps_split = 0;
+  // The other zero-area triangles (repeated or collinear corners), and caps whose split would
+  // leave the surface less manifold than dropping them.
+  std::size_t degenerate_triangles_removed = 0;
+  std::size_t duplicate_triangles_removed = 0;  // same three vertices, any order or orientation
   std::size_t unreferenced_vertices_removed = 0;
   // Triangles listed the other way round from their neighbours (orient_consistently).
   std::size_t triangles_flipped = 0;
 
   bool changed() const {
-    return duplicate_vertices_merged + degenerate_triangles_removed + duplicate_triangles_removed +
-               unreferenced_vertices_removed + triangles_flipped >
+    return duplicate_vertices_merged + caps_split + degenerate_triangles_removed +
+               duplicate_triangles_removed + unreferenced_vertices_removed + triangles_flipped >
            0;
   }
   // Whether summary() has anything to say: a change, or duplicates kept apart.
@@ -38,13 +43,15 @@ inline constexpr Index kRemovedVertex = ~Index{0};
 
 // Applies, in this order: merge duplicate vertices (equal or nearly equal coordinates) where that
 // stitches the surface and makes no edge or vertex non-manifold, nor a pinch vertex more so than
-// its copies were (the others are kept apart and counted), drop zero-area triangles (exact
-// collinearity test), drop duplicate triangles (first one kept), drop unreferenced vertices, flip
-// the triangles listed the other way round from most of their patch (the triangles joined by
-// manifold edges; a patch no orientation makes consistent stays as it is). Deterministic; the kept
-// elements keep their relative order. `new_id`, when given, receives each vertex's id in the
-// repaired mesh: a merged duplicate's is that of the vertex it was merged into; a removed vertex's
-// is kRemovedVertex.
+// its copies were (the others are kept apart and counted), split out zero-area caps (a corner
+// strictly inside the long edge) into the triangle across that edge unless that leaves more
+// non-manifold edges and vertices than dropping them, drop the zero-area triangles left (exact
+// collinearity test), drop duplicate triangles (first one kept), drop unreferenced
+// vertices, flip the triangles listed the other way round from most of their patch (the triangles
+// joined by manifold edges; a patch no orientation makes consistent stays as it is). Deterministic;
+// the kept elements keep their relative order. `new_id`, when given, receives each vertex's id in
+// the repaired mesh: a merged duplicate's is that of the vertex it was merged into; a removed
+// vertex's is kRemovedVertex.
 RepairReport repair_mesh(TriangleMesh& mesh, std::vector<Index>* new_id = nullptr);
 
 // Edges given in a mesh's vertex ids (feature edges read from a file), in the ids of the mesh

@@ -175,6 +175,24 @@ TriangleMesh with_one_triangle_holes(TriangleMesh mesh, std::size_t holes, std::
   return mesh;
 }
 
+TriangleMesh with_t_junction(TriangleMesh mesh, std::size_t t, int points) {
+  const auto [a, b, x] = mesh.triangles[t];
+  std::vector<Index> along{a};  // a, the points in order, b
+  for (int k = 1; k <= points; ++k) {
+    const double s = static_cast<double>(k) / (points + 1);
+    along.push_back(static_cast<Index>(mesh.vertices.size()));
+    mesh.vertices.push_back((1 - s) * mesh.vertices[a] + s * mesh.vertices[b]);
+  }
+  along.push_back(b);
+  mesh.triangles[t] = {along[0], along[1], x};
+  for (std::size_t k = 1; k + 1 < along.size(); ++k)
+    mesh.triangles.push_back({along[k], along[k + 1], x});
+  // The caps: (a, b, m_k), then (a, m_k, m_k-1) down to (a, m_2, m_1).
+  for (std::size_t k = along.size() - 1; k >= 2; --k)
+    mesh.triangles.push_back({a, along[k], along[k - 1]});
+  return mesh;
+}
+
 TriangleMesh moebius_strip(int n) {
   TriangleMesh m;
   for (int i = 0; i < n; ++i) {

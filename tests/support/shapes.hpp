@@ -65,6 +65,13 @@ TriangleMesh moebius_strip(int n);
 // boundary loop).
 TriangleMesh with_one_triangle_holes(TriangleMesh mesh, std::size_t holes, std::size_t step);
 
+// `mesh` with a T-junction stitched shut by zero-area triangles, as CAD exports and game assets
+// have: triangle `t` (a, b, x) is split into a fan from x at `points` points evenly along a-b
+// (exact for a power of two plus one intervals and coordinates on a binary grid), the triangle
+// across a-b is left whole, and the slit between them is closed by a fan of caps from a, each
+// zero-area with a corner strictly inside its long edge. Closed and manifold where `mesh` is.
+TriangleMesh with_t_junction(TriangleMesh mesh, std::size_t t, int points);
+
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
 
