@@ -39,13 +39,21 @@ constexpr std::size_t kGrowthWithoutProgress = 2;
 // 2,636, 4,724), while refinement that converges adds about as many seeds each round (femur.off
 // at 1k, pinned: at most 1.9 times the round before).
 constexpr int kDoublingsWithoutProgress = 2;
+// Nor, progress or not, once the seeds are this many times those the rounds started from, as the
+// count's growth is capped (remesh/topology_first): a genus-73 scan whose handles are far finer
+// than the spacing, and whose sheets cross, went from 5,000 seeds to 100,000 in 41 rounds (500 s)
+// and still lost its topology, each round a little better than the last. On the 57 shared meshes
+// the rounds add at most 0.6 times the count (femur.off at 1k).
+constexpr std::size_t kMostGrowth = 4;
 
 // When the rounds stop adding seeds (the rules above). The first rounds stop after
 // kRoundsWithoutProgress without a better output; the pinned rounds, which follow them where the
 // input's topology was not reached, go on to their own cap.
 class RoundStops {
  public:
-  explicit RoundStops(int rounds) : rounds_(rounds), last_round_(rounds) {}
+  // `seeds`: the seeds the rounds start from.
+  RoundStops(int rounds, std::size_t seeds)
+      : rounds_(rounds), last_round_(rounds), most_seeds_(kMostGrowth * seeds) {}
 
   // After each round's assessment: whether it was the best so far.
   void scored(bool best) { since_best_ = best ? 0 : since_best_ + 1; }
@@ -66,7 +74,7 @@ class RoundStops {
     // seed separates sheets that cross, so there they stop as the first rounds do (man.off at
     // 10k: 81 s, nearly all of it pinned rounds without progress, to 22 s, the same output).
     const bool stalled = since_best_ >= kRoundsWithoutProgress && (!pinned_ || rescued_at_crossing);
-    return round < last_round_ && !stalled && !runaway;
+    return round < last_round_ && !stalled && !runaway && seeds < most_seeds_;
   }
 
   // After each round: how many seeds it added.
@@ -90,6 +98,7 @@ class RoundStops {
  private:
   int rounds_;
   int last_round_;
+  std::size_t most_seeds_;
   bool pinned_ = false;
   int since_best_ = 0;          // rounds since the best was found
   std::size_t last_added_ = 0;  // seeds the last round added
@@ -272,7 +281,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
                              SeedConstraints& constraints, int rounds, MendReport& report) {
   const SpecialEdges special = special_edges(m);
   KeptRounds kept;
-  RoundStops stops(rounds);
+  RoundStops stops(rounds, seeds.size());
   Crossings crossings(m.surface);
   // Where the rounds end without the input's topology, they start again from the best round, for
   // three times as many rounds, with the seeds they add pinned (see kRoundsWithoutProgress).
