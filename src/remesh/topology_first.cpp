@@ -204,12 +204,8 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   // 172 s, against 4 in 94 s without them, the same output).
   const bool even = !settings.sizing.active() && !used.sizing.active();
   const bool adapt_too = even && best.result.input_crossing_triangles == 0;
-  // Nor at a count no larger than the output kept so far, whose seeds topology control already
-  // put where its defects were (a genus-73 scan with crossing sheets, at 5k: its rounds reached
-  // 20,458 seeds, and the tries at 10k and 20k lost its topology too, for 230 s more).
   for (int doubling = 0; doubling < kCountDoublings && lost(); ++doubling) {
     more.vertices *= 2;
-    if (more.vertices <= best.result.mesh.vertices.size()) continue;
     grown(more, even ? "even sizes" : "the same sizes", false);
     if (!adapt_too || !lost()) continue;
     RemeshSettings adapted = more;
