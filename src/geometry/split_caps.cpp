@@ -19,11 +19,6 @@ Kernel::Point_3 point(const TriangleMesh& mesh, Index v) {
   return {p.x, p.y, p.z};
 }
 
-bool zero_area(const TriangleMesh& mesh, const Triangle& t) {
-  return t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-         CGAL::collinear(point(mesh, t[0]), point(mesh, t[1]), point(mesh, t[2]));
-}
-
 Edge undirected(Index a, Index b) {
   return {std::min(a, b), std::max(a, b)};
 }
@@ -99,6 +94,11 @@ std::size_t split_pass(TriangleMesh& mesh) {
 }
 
 }  // namespace
+
+bool zero_area(const TriangleMesh& mesh, const Triangle& t) {
+  return t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+         CGAL::collinear(point(mesh, t[0]), point(mesh, t[1]), point(mesh, t[2]));
+}
 
 std::size_t split_caps(TriangleMesh& mesh) {
   std::size_t total = 0;

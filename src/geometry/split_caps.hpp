@@ -12,6 +12,9 @@
 
 namespace cvtmesh {
 
+// Whether triangle t of `mesh` has zero area: a repeated corner, or collinear corners (exact).
+bool zero_area(const TriangleMesh& mesh, const Triangle& t);
+
 // Splits out every cap whose long edge has exactly one other triangle, not itself of zero area,
 // whose third corner is not joined to the cap's middle corner already (the split would make
 // that edge one of three triangles); repeats while that splits more (caps side by side along an

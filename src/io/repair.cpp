@@ -1,5 +1,3 @@
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -17,12 +15,6 @@
 namespace cvtmesh {
 
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-Kernel::Point_3 point(const Vec3& v) {
-  return {v.x, v.y, v.z};
-}
 
 // Keeps the vertices with keep[v], in order, and renumbers the triangles. Returns each vertex's
 // new id (kRemovedVertex for those not kept).
@@ -162,11 +154,7 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& nearly_equ
 
 std::size_t remove_degenerate_triangles(TriangleMesh& mesh) {
   const std::size_t before = mesh.triangles.size();
-  std::erase_if(mesh.triangles, [&](const Triangle& t) {
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return true;
-    return CGAL::collinear(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]),
-                           point(mesh.vertices[t[2]]));
-  });
+  std::erase_if(mesh.triangles, [&](const Triangle& t) { return zero_area(mesh, t); });
   return before - mesh.triangles.size();
 }
 
@@ -182,11 +170,10 @@ std::size_t nonmanifold_elements(const TriangleMesh& mesh) {
 // touch at a vertex). Sets how many were split out and dropped.
 void remove_zero_area_triangles(TriangleMesh& mesh, std::size_t& split, std::size_t& dropped) {
   split = 0;
+  // Collinear corners, all distinct: a cap, or three corners at one point.
   const bool caps =
       std::any_of(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& t) {
-        return t[0] != t[1] && t[1] != t[2] && t[0] != t[2] &&
-               CGAL::collinear(point(mesh.vertices[t[0]]), point(mesh.vertices[t[1]]),
-                               point(mesh.vertices[t[2]]));
+        return t[0] != t[1] && t[1] != t[2] && t[0] != t[2] && zero_area(mesh, t);
       });
   if (caps) {
     TriangleMesh capped = mesh;
