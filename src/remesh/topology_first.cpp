@@ -41,6 +41,12 @@ double seconds_of(const RemeshResult& r) {
   return r.seconds_initialization + r.seconds_rcvt + r.seconds_ccvt + r.seconds_extraction;
 }
 
+// `s` with the adaptive sizes that even ones give way to.
+RemeshSettings with_adaptive_sizes(RemeshSettings s) {
+  s.sizing.adaptive = kFallbackGradation;
+  return s;
+}
+
 // remesh_unit again with `settings`, within what is left of their time limit after `start`;
 // none if nothing is left, or if these settings cannot be met (a redo's features needing more
 // vertices than its count, say): a second try never turns an output into an error. The
@@ -162,15 +168,19 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
       !used.initial_seeds.empty() || used.topology_rounds == 0 ||
       best.result.input_topology.nonmanifold_edges > 0)
     return best;
-  if (!used.sizing.active()) {
-    RemeshSettings adapted = used;
-    adapted.sizing.adaptive = kFallbackGradation;
-    if (std::optional<UnitRemesh> third = retried(input, adapted, start, "adaptive sizes", tries)) {
-      third->result.sizes_adapted = true;
-      third->result.feature_edges_dropped = best.result.feature_edges_dropped;
-      take_better(best, std::move(*third));
-    }
-  }
+  // A redo with `at` (`detail`: how it differs), kept if it keeps the topology better
+  // (take_better), with the creases dropped so far; its report says whether it adapted the sizes
+  // and by how many vertices the count grew.
+  const auto redo = [&](const RemeshSettings& at, const char* detail, bool adapted,
+                        std::size_t grown_by) {
+    std::optional<UnitRemesh> next = retried(input, at, start, detail, tries);
+    if (!next) return;
+    next->result.count_grown = grown_by;
+    next->result.sizes_adapted = adapted;
+    next->result.feature_edges_dropped = best.result.feature_edges_dropped;
+    take_better(best, std::move(*next));
+  };
+  if (!used.sizing.active()) redo(with_adaptive_sizes(used), "adaptive sizes", true, 0);
   // Last, the count grows, as the paper's rule lets it for the topology alone (§4.4, issue 18
   // item 2): where neither topology control's seeds nor the sizes kept it at the count asked
   // for (ADIS16480.STL of trimesh's test models, a CAD part of genus 24, at 1k; kept at 2k with
@@ -183,14 +193,6 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   RemeshSettings more = at_count(used, unit_vertex_count(input, used, nullptr));
   const auto lost = [&] {
     return topology_kept(best.result) == 0 && !best.result.time_limit_reached;
-  };
-  const auto grown = [&](const RemeshSettings& at, const char* detail, bool adapted) {
-    std::optional<UnitRemesh> next = retried(input, at, start, detail, tries);
-    if (!next) return;
-    next->result.count_grown = at.vertices - asked;
-    if (adapted) next->result.sizes_adapted = true;
-    next->result.feature_edges_dropped = best.result.feature_edges_dropped;
-    take_better(best, std::move(*next));
   };
   // Even sizes that lose the topology at a grown count are tried adaptive at that count too:
   // what is left is narrower than the spacing, and the local feature size gives it many times
@@ -206,11 +208,9 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   const bool adapt_too = even && best.result.input_crossing_triangles == 0;
   for (int doubling = 0; doubling < kCountDoublings && lost(); ++doubling) {
     more.vertices *= 2;
-    grown(more, even ? "even sizes" : "the same sizes", false);
-    if (!adapt_too || !lost()) continue;
-    RemeshSettings adapted = more;
-    adapted.sizing.adaptive = kFallbackGradation;
-    grown(adapted, "adaptive sizes", true);
+    redo(more, even ? "even sizes" : "the same sizes", false, more.vertices - asked);
+    if (adapt_too && lost())
+      redo(with_adaptive_sizes(more), "adaptive sizes", true, more.vertices - asked);
   }
   return best;
 }
