@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/io.hpp"
@@ -134,6 +135,49 @@ TEST(ReadPly, AnElementWithoutPropertiesTakesNoData) {
       "property float x\nproperty float y\nproperty float z\nelement face 1\n"
       "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(m.triangles.size(), 1u);
+}
+
+// Triangle strips (element tristrips, as MeshLab's and the Stanford repository's files write
+// them): abc, cbd, cde... all in the first triangle's orientation; -1 starts a new strip; the
+// triangles with a vertex twice that join strips into one list are no triangles. Strips written
+// apart and joined give the same triangles, here all facing -z, beside the faces of a face element.
+TEST(ReadPly, TriangleStripsBecomeTrianglesOfOneOrientation) {
+  TempDir dir;
+  const std::string vertices =
+      "element vertex 6\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string points = "0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n";
+  const std::vector<Triangle> expected{{0, 1, 2}, {2, 1, 3}, {2, 3, 4}, {4, 3, 5}};
+  for (const std::string& strips : {std::string("9 0 1 2 3 -1 2 3 4 5"),       // two strips
+                                    std::string("10 0 1 2 3 3 2 2 3 4 5")}) {  // joined
+    const TriangleMesh m =
+        read_text(dir, "ply\nformat ascii 1.0\n" + vertices +
+                           "element tristrips 1\nproperty list int int vertex_indices\n"
+                           "end_header\n" +
+                           points + strips + "\n");
+    EXPECT_EQ(m.triangles, expected) << strips;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      const auto [a, b, c] = m.corners(t);
+      EXPECT_LT(cross(b - a, c - a).z, 0) << strips << ", triangle " << t;
+    }
+  }
+  const TriangleMesh both =
+      read_text(dir, "ply\nformat ascii 1.0\n" + vertices +
+                         "element face 1\nproperty list uchar int vertex_indices\n"
+                         "element tristrips 1\nproperty list int int vertex_indices\nend_header\n" +
+                         points + "3 0 2 4\n4 0 1 2 3\n");
+  EXPECT_EQ(both.triangles, (std::vector<Triangle>{{0, 2, 4}, {0, 1, 2}, {2, 1, 3}}));
+  EXPECT_NE(error_of(dir, "ply\nformat ascii 1.0\n" + vertices +
+                              "element tristrips 1\nproperty list int int vertex_indices\n"
+                              "end_header\n" +
+                              points + "4 0 1 2 9\n")
+                .find("triangle strip 0 references vertex 9, out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of(dir, "ply\nformat ascii 1.0\n" + vertices +
+                              "element tristrips 1\nproperty list int float vertex_indices\n"
+                              "end_header\n" +
+                              points + "3 0 1 2\n")
+                .find("PLY element tristrips has no integer list"),
+            std::string::npos);
 }
 
 TEST(ReadPly, MissingElementsLeaveAnEmptyMesh) {

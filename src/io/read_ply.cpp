@@ -1,7 +1,8 @@
 // PLY as Paul Bourke's specification defines it: a text header of elements, each with a count
 // and typed properties (scalars or lists), then the elements' data in order, as text or as
 // binary of either byte order. The data are read from memory, where every count can be checked
-// against the bytes that are left.
+// against the bytes that are left. Faces come from a "face" element, triangle strips from a
+// "tristrips" element (as MeshLab's and the Stanford repository's files write them), or both.
 #include "io/read_ply.hpp"
 
 #include <algorithm>
@@ -184,14 +185,23 @@ class PlyReader {
         if (with_scalar_) find_scalar(element);
       } else if (element.name == "face") {
         face_element_ = e;
-        auto p = find_property(element, "vertex_indices");
-        if (!p) p = find_property(element, "vertex_index");
-        if (!p || !element.properties[*p].list || element.properties[*p].type == Type::float32 ||
-            element.properties[*p].type == Type::float64)
-          fail("PLY element face has no integer list 'vertex_indices' or 'vertex_index'");
-        indices_ = *p;
+        indices_ = index_list(element);
+      } else if (element.name == "tristrips") {
+        strip_element_ = e;
+        strip_indices_ = index_list(element);
       }
     }
+  }
+
+  // The integer list of vertex ids of a face or tristrips element.
+  std::size_t index_list(const Element& element) const {
+    auto p = find_property(element, "vertex_indices");
+    if (!p) p = find_property(element, "vertex_index");
+    if (!p || !element.properties[*p].list || element.properties[*p].type == Type::float32 ||
+        element.properties[*p].type == Type::float64)
+      fail("PLY element " + element.name +
+           " has no integer list 'vertex_indices' or 'vertex_index'");
+    return *p;
   }
 
   // The vertex scalar asked for: the first that is no position, normal or colour.
@@ -219,6 +229,7 @@ class PlyReader {
     const std::size_t e = static_cast<std::size_t>(&element - elements_.data());
     const bool vertices = vertex_element_ && *vertex_element_ == e;
     const bool faces = face_element_ && *face_element_ == e;
+    const bool strips = strip_element_ && *strip_element_ == e;
     // Items without properties take no bytes, however many the header announces (found by
     // fuzzing: 7.5e15 of them kept the loop below going for hours).
     if (element.properties.empty()) return;
@@ -236,14 +247,22 @@ class PlyReader {
           continue;
         }
         const std::uint64_t count = list_count(property, element, item);
-        const bool keep = faces && p == indices_;
-        std::vector<std::size_t> polygon;
-        if (keep) polygon.reserve(count);
+        const bool keep = (faces && p == indices_) || (strips && p == strip_indices_);
+        std::vector<double> values;
+        if (keep) values.reserve(count);
         for (std::uint64_t k = 0; k < count; ++k) {
           const double value = scalar(property.type, element, item);
-          if (keep) polygon.push_back(vertex_id(value, item));
+          if (keep) values.push_back(value);
         }
-        if (keep) soup_.polygons.push_back(std::move(polygon));
+        if (!keep) continue;
+        if (strips) {
+          add_strips(values, item);
+          continue;
+        }
+        std::vector<std::size_t> polygon;
+        polygon.reserve(values.size());
+        for (const double value : values) polygon.push_back(vertex_id(value, "face", item));
+        soup_.polygons.push_back(std::move(polygon));
       }
       if (vertices) soup_.points.push_back(point);
     }
@@ -259,11 +278,37 @@ class PlyReader {
     return static_cast<std::uint64_t>(value);
   }
 
-  std::size_t vertex_id(double value, std::uint64_t face) const {
+  // `what` `item`: the face or triangle strip that lists the id, for the error.
+  std::size_t vertex_id(double value, const char* what, std::uint64_t item) const {
     if (!(value >= 0 && value < static_cast<double>(vertex_count_)))
-      fail("face " + std::to_string(face) + " references vertex " + number_text(value) +
-           ", out of range (the file has " + std::to_string(vertex_count_) + " vertices)");
+      fail(std::string(what) + " " + std::to_string(item) + " references vertex " +
+           number_text(value) + ", out of range (the file has " + std::to_string(vertex_count_) +
+           " vertices)");
     return static_cast<std::size_t>(value);
+  }
+
+  // The triangles of the strips that `ids` lists (item `item` of the tristrips element, as the
+  // Stanford and VCG/MeshLab PLY files write them): vertices a, b, c, d, e... make triangles abc,
+  // cbd, cde..., every second one turned so that all take the first's orientation; -1 starts a
+  // new strip. A triangle with a vertex twice is how writers join strips into one list, no part
+  // of the surface, and is skipped (it keeps its place in the alternation).
+  void add_strips(const std::vector<double>& ids, std::uint64_t item) {
+    std::vector<std::size_t> strip;
+    for (const double value : ids) {
+      if (value == -1) {
+        strip.clear();
+        continue;
+      }
+      strip.push_back(vertex_id(value, "triangle strip", item));
+      const std::size_t n = strip.size();
+      if (n < 3) continue;
+      const std::size_t a = strip[n - 3], b = strip[n - 2], c = strip[n - 1];
+      if (a == b || b == c || c == a) continue;
+      if (n % 2 == 1)
+        soup_.polygons.push_back({a, b, c});
+      else
+        soup_.polygons.push_back({b, a, c});
+    }
   }
 
   double scalar(Type type, const Element& element, std::uint64_t item) {
@@ -366,10 +411,10 @@ class PlyReader {
   std::uintmax_t file_size_;
   Format format_ = Format::ascii;
   std::vector<Element> elements_;
-  std::optional<std::size_t> vertex_element_, face_element_;
+  std::optional<std::size_t> vertex_element_, face_element_, strip_element_;
   std::uint64_t vertex_count_ = 0;
   std::size_t coordinate_[3] = {0, 0, 0};
-  std::size_t indices_ = 0;
+  std::size_t indices_ = 0, strip_indices_ = 0;  // the id lists of faces and triangle strips
   bool with_scalar_;
   std::optional<std::size_t> scalar_;  // the vertex scalar's property, when asked for
   std::string data_;                   // everything after the header
