@@ -143,17 +143,18 @@ TEST(ReadPly, AnElementWithoutPropertiesTakesNoData) {
 // apart and joined give the same triangles, here all facing -z, beside the faces of a face element.
 TEST(ReadPly, TriangleStripsBecomeTrianglesOfOneOrientation) {
   TempDir dir;
-  const std::string vertices =
-      "element vertex 6\nproperty float x\nproperty float y\nproperty float z\n";
   const std::string points = "0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n";
+  // A file of the 6 points above, with `elements` (header lines) holding `data`.
+  const auto ply = [&](const std::string& elements, const std::string& data) {
+    return "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+           "property float z\n" +
+           elements + "end_header\n" + points + data;
+  };
+  const std::string strips_of = "element tristrips 1\nproperty list int int vertex_indices\n";
   const std::vector<Triangle> expected{{0, 1, 2}, {2, 1, 3}, {2, 3, 4}, {4, 3, 5}};
   for (const std::string& strips : {std::string("9 0 1 2 3 -1 2 3 4 5"),       // two strips
                                     std::string("10 0 1 2 3 3 2 2 3 4 5")}) {  // joined
-    const TriangleMesh m =
-        read_text(dir, "ply\nformat ascii 1.0\n" + vertices +
-                           "element tristrips 1\nproperty list int int vertex_indices\n"
-                           "end_header\n" +
-                           points + strips + "\n");
+    const TriangleMesh m = read_text(dir, ply(strips_of, strips + "\n"));
     EXPECT_EQ(m.triangles, expected) << strips;
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {
       const auto [a, b, c] = m.corners(t);
@@ -161,21 +162,14 @@ TEST(ReadPly, TriangleStripsBecomeTrianglesOfOneOrientation) {
     }
   }
   const TriangleMesh both =
-      read_text(dir, "ply\nformat ascii 1.0\n" + vertices +
-                         "element face 1\nproperty list uchar int vertex_indices\n"
-                         "element tristrips 1\nproperty list int int vertex_indices\nend_header\n" +
-                         points + "3 0 2 4\n4 0 1 2 3\n");
+      read_text(dir, ply("element face 1\nproperty list uchar int vertex_indices\n" + strips_of,
+                         "3 0 2 4\n4 0 1 2 3\n"));
   EXPECT_EQ(both.triangles, (std::vector<Triangle>{{0, 2, 4}, {0, 1, 2}, {2, 1, 3}}));
-  EXPECT_NE(error_of(dir, "ply\nformat ascii 1.0\n" + vertices +
-                              "element tristrips 1\nproperty list int int vertex_indices\n"
-                              "end_header\n" +
-                              points + "4 0 1 2 9\n")
+  EXPECT_NE(error_of(dir, ply(strips_of, "4 0 1 2 9\n"))
                 .find("triangle strip 0 references vertex 9, out of range"),
             std::string::npos);
-  EXPECT_NE(error_of(dir, "ply\nformat ascii 1.0\n" + vertices +
-                              "element tristrips 1\nproperty list int float vertex_indices\n"
-                              "end_header\n" +
-                              points + "3 0 1 2\n")
+  EXPECT_NE(error_of(dir, ply("element tristrips 1\nproperty list int float vertex_indices\n",
+                              "3 0 1 2\n"))
                 .find("PLY element tristrips has no integer list"),
             std::string::npos);
 }
