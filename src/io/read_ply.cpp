@@ -248,20 +248,19 @@ class PlyReader {
         }
         const std::uint64_t count = list_count(property, element, item);
         const bool keep = (faces && p == indices_) || (strips && p == strip_indices_);
-        std::vector<double> values;
-        if (keep) values.reserve(count);
+        ids_.clear();
         for (std::uint64_t k = 0; k < count; ++k) {
           const double value = scalar(property.type, element, item);
-          if (keep) values.push_back(value);
+          if (keep) ids_.push_back(value);
         }
         if (!keep) continue;
         if (strips) {
-          add_strips(values, item);
+          add_strips(ids_, item);
           continue;
         }
         std::vector<std::size_t> polygon;
-        polygon.reserve(values.size());
-        for (const double value : values) polygon.push_back(vertex_id(value, "face", item));
+        polygon.reserve(ids_.size());
+        for (const double value : ids_) polygon.push_back(vertex_id(value, "face", item));
         soup_.polygons.push_back(std::move(polygon));
       }
       if (vertices) soup_.points.push_back(point);
@@ -415,6 +414,7 @@ class PlyReader {
   std::uint64_t vertex_count_ = 0;
   std::size_t coordinate_[3] = {0, 0, 0};
   std::size_t indices_ = 0, strip_indices_ = 0;  // the id lists of faces and triangle strips
+  std::vector<double> ids_;                      // the current face's or strip's ids, as read
   bool with_scalar_;
   std::optional<std::size_t> scalar_;  // the vertex scalar's property, when asked for
   std::string data_;                   // everything after the header
