@@ -3,6 +3,8 @@
 // loops no triangle closes stay open, each counted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
@@ -87,6 +89,32 @@ TEST(FillHoles, SaysSoWhereTheLoopsAreNotDefined) {
   EXPECT_EQ(m.triangles, before.triangles);
   m = with_one_triangle_holes(icosphere(2), 1, 7);
   EXPECT_FALSE(fill_holes(m, 1e9).loops_undefined);
+}
+
+TEST(FillHoles, SaysSoWhereTheBoundaryMeetsEdgesOfThreeTriangles) {
+  // A flap (a, v, b) over two neighbouring triangles (v, a, c) and (v, c, b) of a sphere, glued
+  // along (a, v) and (v, b): its side (a, b) is the only boundary edge, and no loop closes there
+  // (MeshLab's sub.obj has one; the walk stopped at a, and the one-vertex "loop" crashed CGAL's
+  // hole triangulation).
+  TriangleMesh m = icosphere(2);
+  const Triangle first = m.triangles[0];
+  const Index v = first[0], a = first[1], c = first[2];
+  const auto second = std::find_if(m.triangles.begin(), m.triangles.end(), [&](const Triangle& t) {
+    return std::ranges::count(t, v) && std::ranges::count(t, c) && !std::ranges::count(t, a);
+  });
+  ASSERT_NE(second, m.triangles.end());
+  const Index b = (*second)[0] != v && (*second)[0] != c   ? (*second)[0]
+                  : (*second)[1] != v && (*second)[1] != c ? (*second)[1]
+                                                           : (*second)[2];
+  m.triangles.push_back({a, v, b});
+  const TopologyReport t = analyze_topology(m);
+  ASSERT_EQ(t.nonmanifold_edges, 2u);
+  ASSERT_EQ(t.boundary_edges, 1u);
+  const TriangleMesh before = m;
+  const HoleFilling f = fill_holes(m, 1e9);
+  EXPECT_TRUE(f.loops_undefined);
+  EXPECT_EQ(f.filled, 0u);
+  EXPECT_EQ(m.triangles, before.triangles);
 }
 
 TEST(FillHoles, LeavesASlitNoTriangleClosesOpen) {

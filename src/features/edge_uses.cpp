@@ -52,12 +52,16 @@ std::optional<std::vector<BoundaryLoop>> boundary_loops(const TriangleMesh& mesh
   for (Index start = 0; start < into.size(); ++start) {
     if (into[start] == kNone || seen[start]) continue;
     BoundaryLoop& loop = loops.emplace_back();
-    for (Index v = start; into[v] != kNone && !seen[v];) {
+    Index v = start;
+    while (into[v] != kNone && !seen[v]) {
       seen[v] = true;
       loop.vertices.push_back(v);
       loop.uses.push_back(into[v]);
       v = mesh.triangles[uses[into[v]].triangle()][uses[into[v]].corner % 3];
     }
+    // A walk that stops short of its start left the boundary through an edge of three or more
+    // triangles (a flap glued along two of its sides has its third side alone): no loop.
+    if (v != start) return std::nullopt;
   }
   return loops;
 }

@@ -39,7 +39,8 @@ struct BoundaryLoop {
 };
 // The boundary loops of `mesh` (edges of one triangle), from `uses` = edge_uses(mesh), each
 // starting at its smallest vertex id, in that order; none when a vertex has two boundary edges
-// leaving it (a non-manifold vertex, where loops are not defined).
+// leaving it (a non-manifold vertex), or when the boundary edges do not close into loops (they
+// meet edges of three or more triangles): there loops are not defined.
 std::optional<std::vector<BoundaryLoop>> boundary_loops(const TriangleMesh& mesh,
                                                         const std::vector<EdgeUse>& uses);
 
