@@ -1221,6 +1221,7 @@ TEST(NonManifoldInput, ASheetJunctionIsKeptWithoutRefiningAroundIt) {
   EXPECT_EQ(r.feature_edges_missing, 0u);
   EXPECT_EQ(r.islands_seeded + r.seeds_refined, 0u);
   EXPECT_EQ(r.mesh.vertices.size(), 300u);
+  EXPECT_EQ(r.sheets_apart, 0u);  // kept whole: nothing to mend
 }
 
 TEST(HardCases, ANeedle) {

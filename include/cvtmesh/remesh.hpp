@@ -26,7 +26,9 @@ enum class CvtMode { rcvt, ccvt, both };
 // - "topology": a round of topology control (paper §4.4) that added seeds: `iteration` the
 //   round, `seeds` the seeds after it, `defects` the triangles at defects that it seeded;
 // - "redo": the output lost the input's topology, and the remesh starts again (issue 18):
-//   `iteration` the try (2, 3, ...), `seeds` its vertex count, `detail` how it differs.
+//   `iteration` the try (2, 3, ...), `seeds` its vertex count, `detail` how it differs;
+// - "sheets": a non-manifold input, remeshed whole, lost its topology or gained edges of three
+//   or more triangles beside the input's: its sheets are remeshed apart (see sheets_apart).
 // elapsed_seconds counts from the start of the current try.
 struct RemeshProgress {
   const char* phase;
@@ -140,6 +142,11 @@ struct RemeshResult {
   // more seeds of their own than the count left (many small holes, with sizes graded down to
   // them): the count grew to twice their need. 0 when the count asked for sufficed.
   std::size_t count_grown = 0;
+  // Where the input is non-manifold along edges of three or more triangles, and remeshed whole
+  // it lost its topology there or gained such edges beside the junction: the sheets meeting
+  // there, remeshed apart and zipped along the junction, when that output was the better. 0
+  // when the input was remeshed whole.
+  std::size_t sheets_apart = 0;
   // Topology control (paper §4.4), at most 3 × `topology_rounds` rounds, each triangulating and
   // polishing again: seeds that joined a feature curve, or came in on one, where the output had
   // cut it; and seeds added in the extra pieces of restricted cells split in several, or in

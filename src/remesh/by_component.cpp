@@ -6,7 +6,10 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
+#include "cvtmesh/quality.hpp"
+#include "cvtmesh/topology.hpp"
 #include "features/curve_projector.hpp"
 #include "features/curve_spacing.hpp"
 #include "features/edge_uses.hpp"
@@ -16,10 +19,12 @@
 #include "geometry/surface_projector.hpp"
 #include "geometry/union_find.hpp"
 #include "quality/hausdorff_with_tree.hpp"
+#include "remesh/branch_curves.hpp"
 #include "remesh/edge_length_ratio.hpp"
 #include "remesh/flip_links.hpp"
 #include "remesh/pipeline.hpp"
 #include "remesh/topology_first.hpp"
+#include "remesh/zip_sheets.hpp"
 #include "system/elapsed.hpp"
 
 namespace cvtmesh {
@@ -33,6 +38,8 @@ struct Component {
   TriangleMesh mesh;
   std::vector<Index> input_vertex;  // per vertex of `mesh`: its id in the whole
   std::vector<Index> pinches;       // vertices (of `mesh`) that other components have too
+  std::vector<Edge> branch_edges;   // its edges (of `mesh`) that are edges of three or more
+                                    // triangles in the whole
   double area = 0;
 };
 
@@ -41,7 +48,18 @@ struct Component {
 // of them, as one of their `pinches`. So is one where sheets of a component touch (its triangles
 // in several fans, joined across edges of two triangles, and no edge of three or more there): it
 // has a copy per fan. Each pinch is remeshed as a corner, and the copies welded in the output.
-std::vector<Component> split_components(const TriangleMesh& mesh) {
+//
+// With `passed_by` (per vertex, one on a junction curve that no sheet keeps: see
+// resample_branch_curves), the parts are sheets instead: triangles joined across edges of exactly
+// two triangles. An edge of three or more triangles (where sheets meet, as in a T or a flap glued
+// to a surface) parts them, so that no seed of one sheet owns another's surface however shallow
+// the angle between them; the triangles of one sheet there stay joined (a sphere with a flap glued
+// along two edges is a sphere and a flap, not a sphere slit open, whose two sides no seed tells
+// apart), and a sheet touching itself there stays non-manifold, remeshed as a whole mesh is. Every
+// vertex has a copy per fan, the junction's vertices (but those passed by) are pinches, and its
+// edges are each part's `branch_edges`.
+std::vector<Component> split_components(const TriangleMesh& mesh,
+                                        const std::vector<bool>* passed_by) {
   const std::size_t triangles = mesh.triangles.size();
   UnionFind sets(triangles), fans(3 * triangles);
   std::vector<bool> branching(mesh.vertices.size(), false);
@@ -50,12 +68,36 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
     const Triangle& f = mesh.triangles[t];
     return 3 * t + static_cast<std::size_t>(f[0] == v ? 0 : f[1] == v ? 1 : 2);
   };
+  std::vector<Edge> branch;  // edges of three or more triangles, sorted
   for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
     for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j)
-      sets.unite(uses[j].triangle(), uses[i].triangle());
+      if (!passed_by) sets.unite(uses[j].triangle(), uses[i].triangle());
+    if (passed_by && j - i > 2) {  // undone: the edge's triangles join as sheets only
+      branch.push_back(uses[i].edge);
+      continue;
+    }
     for (const Index v : uses[i].edge) {
       if (j - i == 2) fans.unite(corner(uses[i].triangle(), v), corner(uses[i + 1].triangle(), v));
       if (j - i > 2) branching[v] = true;
+    }
+  }
+  if (passed_by) {
+    // Sheets: triangles joined across edges of two triangles; then one sheet's triangles on a
+    // junction edge joined in their fans.
+    for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+      for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j) {
+      }
+      if (j - i == 2) sets.unite(uses[i + 1].triangle(), uses[i].triangle());
+    }
+    for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+      for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j) {
+      }
+      if (j - i <= 2) continue;
+      for (std::size_t k = i; k < j; ++k)
+        for (std::size_t l = k + 1; l < j; ++l)
+          if (sets.find(uses[k].triangle()) == sets.find(uses[l].triangle()))
+            for (const Index v : uses[i].edge)
+              fans.unite(corner(uses[k].triangle(), v), corner(uses[l].triangle(), v));
     }
   }
   std::vector<Index> component_of_root(triangles, kNoIndex);
@@ -69,8 +111,8 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
     triangles_of[c].push_back(t);
   }
   std::vector<Component> parts(triangles_of.size());
-  // A vertex's id in a part: per fan (a fan lies in one component), or, at the end of an edge of
-  // three or more triangles, per component.
+  // A vertex's id in a part: per fan (a fan lies in one part), or, at the end of an edge of
+  // three or more triangles in a component, per component.
   std::vector<Index> fan_local(3 * triangles, kNoIndex);
   std::vector<Index> owner(mesh.vertices.size(), kNoIndex);  // the last component that has it
   std::vector<Index> local(mesh.vertices.size());            // and its id there
@@ -92,12 +134,20 @@ std::vector<Component> split_components(const TriangleMesh& mesh) {
         mapped[k] = id;
       }
       part.mesh.triangles.push_back(mapped);
+      for (int k = 0; k < 3; ++k)
+        if (std::binary_search(branch.begin(), branch.end(),
+                               edge_of(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])))
+          part.branch_edges.push_back(edge_of(mapped[k], mapped[(k + 1) % 3]));
     }
   }
   for (Component& part : parts) {
     part.area = surface_area(part.mesh);
     for (Index v = 0; v < part.input_vertex.size(); ++v)
-      if (copies[part.input_vertex[v]] > 1) part.pinches.push_back(v);
+      if (copies[part.input_vertex[v]] > 1 && !(passed_by && (*passed_by)[part.input_vertex[v]]))
+        part.pinches.push_back(v);
+    std::sort(part.branch_edges.begin(), part.branch_edges.end());
+    part.branch_edges.erase(std::unique(part.branch_edges.begin(), part.branch_edges.end()),
+                            part.branch_edges.end());
   }
   return parts;
 }
@@ -167,7 +217,12 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
     s.sizing.edge_lengths.clear();
   }
   // Where components touch, each gets the vertex as a corner, and the outputs are welded there.
-  for (Index c = 0; c < parts.size(); ++c) all[c].features.user_corners = parts[c].pinches;
+  // Where sheets meet along edges of three or more triangles, each keeps those edges: welded,
+  // they are the input's edges of three or more triangles again.
+  for (Index c = 0; c < parts.size(); ++c) {
+    all[c].features.user_corners = parts[c].pinches;
+    all[c].features.user_edges = parts[c].branch_edges;
+  }
   if (!settings.features.user_edges.empty() || !settings.features.user_corners.empty()) {
     // Checked on the whole, so that an error names the caller's vertex ids; an edge of the mesh
     // lies in one component.
@@ -412,26 +467,100 @@ void weld_pinches(RemeshResult& all, std::vector<std::pair<Index, Index>> found)
   for (Index& v : all.vertices_added) v = renumber(v);
 }
 
-}  // namespace
+// The features of `all`, found on the input with its junction split, in the input's ids: a
+// piece of an edge split is that edge, and the points added are no corners or curve vertices.
+void in_input_ids(RemeshResult& all, const BranchCurves& junction, std::size_t input_vertices) {
+  const auto whole = [&](const Edge& e) {
+    for (const Index v : e)
+      if (v >= input_vertices) {
+        const BranchCurves::Added& x = junction.added[v - input_vertices];
+        return Edge{x.a, x.b};
+      }
+    return e;
+  };
+  for (Edge& e : all.features.edges) e = whole(e);
+  for (Edge& e : all.feature_edges_dropped) e = whole(e);
+  std::erase_if(all.features.corners, [&](Index v) { return v >= input_vertices; });
+  for (FeatureCurve& curve : all.features.curves)
+    std::erase_if(curve.vertices, [&](Index v) { return v >= input_vertices; });
+}
 
-RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings) {
-  if (!settings.initial_seeds.empty()) return remesh_unit_topology_first(mesh, settings).result;
-  std::vector<Component> parts = split_components(mesh);
+// `settings` for the input with its junction split: a caller's feature edge that was split is
+// its pieces, and a length per vertex is interpolated at the points added.
+RemeshSettings with_junction_split(RemeshSettings settings, const BranchCurves& junction) {
+  std::vector<Edge> edges;
+  for (const Edge& e : settings.features.user_edges) {
+    const Edge key = edge_of(e[0], e[1]);
+    const auto at = std::lower_bound(junction.split.begin(), junction.split.end(), key);
+    if (at == junction.split.end() || *at != key) {
+      edges.push_back(e);
+      continue;
+    }
+    const std::vector<Index>& piece = junction.pieces[at - junction.split.begin()];
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) edges.push_back({piece[i], piece[i + 1]});
+  }
+  settings.features.user_edges = std::move(edges);
+  std::vector<double>& lengths = settings.sizing.edge_lengths;
+  if (!lengths.empty())
+    for (const BranchCurves::Added& x : junction.added) {
+      const double length = (1 - x.t) * lengths[x.a] + x.t * lengths[x.b];
+      lengths.push_back(length);
+    }
+  return settings;
+}
+
+// The components (or, with `junction`, the sheets) of `input` remeshed apart and welded; none
+// when the sheets' outputs do not meet along the junction.
+std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const RemeshSettings& given,
+                                         const BranchCurves* junction) {
+  const bool split = junction && !junction->added.empty();
+  const TriangleMesh& mesh = split ? junction->mesh : input;
+  const RemeshSettings settings = split ? with_junction_split(given, *junction) : given;
+  std::vector<bool> passed_by(junction ? mesh.vertices.size() : 0);
+  for (Index v = 0; v < passed_by.size(); ++v)
+    passed_by[v] = junction->on_curve[v] && !junction->corner[v];
+  std::vector<Component> parts = split_components(mesh, junction ? &passed_by : nullptr);
   // A component without area (degenerate triangles only) has nothing to remesh: the whole
   // gives it no seed either.
   std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
   if (parts.empty() || (parts.size() == 1 && parts[0].pinches.empty())) {
+    if (junction) return std::nullopt;  // one sheet: the whole, remeshed already
     // The one part is a copy of the whole: freed first (igea.ply at 10k: 13 MB of a 205 MB peak).
     std::vector<Component>().swap(parts);
-    return remesh_unit_topology_first(mesh, settings).result;
+    return remesh_unit_topology_first(input, given).result;
   }
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<RemeshSettings> part_settings = component_settings(mesh, parts, settings);
+  // A sheet of a non-manifold input too small for two vertices of its own (a sliver glued to a
+  // surface along an edge) stays as it is: its remesh would put its share of a vertex on a
+  // dozen corners and sides (conrod.stl's slivers of area 1e-6 asked a thousand).
+  const double area_per_vertex =
+      surface_area(mesh) /
+      static_cast<double>(std::max<std::size_t>(requested_vertex_count(mesh, settings), 1));
+  const auto as_it_is = [&](const Component& part) {
+    return !part.branch_edges.empty() && part.area < 2 * area_per_vertex;
+  };
+  // The input's edges of three or more triangles, each with the parts that have it.
+  std::map<Edge, std::vector<std::size_t>> sharing;
+  for (std::size_t c = 0; c < parts.size(); ++c)
+    for (const Edge& e : parts[c].branch_edges)
+      sharing[edge_of(parts[c].input_vertex[e[0]], parts[c].input_vertex[e[1]])].push_back(c);
+  std::vector<SharedSegment> shared;
+  for (const std::vector<Index>& stretch :
+       junction ? junction->stretches : std::vector<std::vector<Index>>{}) {
+    std::vector<std::size_t>& with = sharing[edge_of(stretch[0], stretch[1])];
+    with.erase(std::unique(with.begin(), with.end()), with.end());
+    if (with.size() < 2) continue;  // in one part only: nothing to zip
+    SharedSegment& s = shared.emplace_back();
+    for (const Index v : stretch) s.points.push_back(mesh.vertices[v]);
+    s.sheets = with;
+  }
   RemeshResult all;
   std::vector<double> ratios;
   double gradient2_initial = 0, gradient2_final = 0;
   std::vector<std::pair<Index, Index>> pinches;  // (input vertex, output vertex)
+  std::vector<SheetVertices> sheets;             // per part, its output's vertices in the whole
   for (std::size_t c = 0; c < parts.size(); ++c) {
     RemeshSettings& s = part_settings[c];
     if (settings.time_limit > 0) {
@@ -439,25 +568,88 @@ RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings&
       // seeds as sampled make its output), as the whole would.
       s.time_limit = std::max(settings.time_limit - seconds_since(start), 1e-9);
     }
-    UnitRemesh part = remesh_unit_topology_first(parts[c].mesh, s);
+    UnitRemesh part;
+    if (as_it_is(parts[c]))
+      part.result.mesh = parts[c].mesh;
+    else
+      part = remesh_unit_topology_first(parts[c].mesh, s);
+    sheets.push_back(
+        {static_cast<Index>(all.mesh.vertices.size()),
+         static_cast<Index>(all.mesh.vertices.size() + part.result.mesh.vertices.size())});
     find_pinches(parts[c], part.result.mesh, static_cast<Index>(all.mesh.vertices.size()), pinches);
     ratios.insert(ratios.end(), part.edge_ratios.begin(), part.edge_ratios.end());
     append(all, std::move(part.result), parts[c], gradient2_initial, gradient2_final);
   }
+  if (!shared.empty()) {
+    // Sheets meet edge to edge: each gets the others' vertices along the edges they share.
+    std::optional<std::vector<std::pair<Index, Index>>> zipped = zip_shared_segments(
+        all.mesh, all.feature_edges, sheets, shared, static_cast<Index>(mesh.vertices.size()));
+    if (!zipped) return std::nullopt;
+    pinches.insert(pinches.end(), zipped->begin(), zipped->end());
+  }
   weld_pinches(all, std::move(pinches));
   all.gradient_norm_initial = std::sqrt(gradient2_initial);
   all.gradient_norm_final = std::sqrt(gradient2_final);
+  if (split) in_input_ids(all, *junction, input.vertices.size());
   std::sort(all.features.edges.begin(), all.features.edges.end());
+  all.features.edges.erase(std::unique(all.features.edges.begin(), all.features.edges.end()),
+                           all.features.edges.end());  // a junction edge is one of each sheet
   std::sort(all.features.corners.begin(), all.features.corners.end());
   all.features.corners.erase(std::unique(all.features.corners.begin(), all.features.corners.end()),
                              all.features.corners.end());  // a pinch is a corner of each part
   std::sort(all.feature_edges.begin(), all.feature_edges.end());
   std::sort(all.feature_edges_dropped.begin(), all.feature_edges_dropped.end());
-  all.input_topology = analyze_topology(mesh);
+  all.feature_edges_dropped.erase(
+      std::unique(all.feature_edges_dropped.begin(), all.feature_edges_dropped.end()),
+      all.feature_edges_dropped.end());
+  all.input_topology = analyze_topology(input);
+  if (junction) all.sheets_apart = parts.size();
   all.edge_length_ratio = ratio_percentiles(std::move(ratios));
   if (settings.hausdorff && !all.mesh.triangles.empty())
-    all.hausdorff = hausdorff_distance(all.mesh, mesh, SurfaceProjector(mesh), *settings.hausdorff);
+    all.hausdorff =
+        hausdorff_distance(all.mesh, input, SurfaceProjector(input), *settings.hausdorff);
   return all;
+}
+
+// How well an output of an input with `in`'s topology keeps its junction: first the topology and
+// the junction kept (no edge of three or more triangles off it, no more non-manifold vertices),
+// then fewer such edges off it, then the larger θmin.
+std::tuple<bool, std::ptrdiff_t, double> junction_score(const RemeshResult& r,
+                                                        const TopologyReport& in,
+                                                        const BranchCurves& junction) {
+  const TopologyReport t = analyze_topology(r.mesh);
+  const std::size_t off = edges_off_junction(r.mesh, junction);
+  const bool kept =
+      same_topology(t, in) && off == 0 && t.nonmanifold_vertices <= in.nonmanifold_vertices;
+  return {kept, -static_cast<std::ptrdiff_t>(off), measure_quality(r.mesh).angle_min_deg};
+}
+
+}  // namespace
+
+RemeshResult remesh_by_component(const TriangleMesh& input, const RemeshSettings& given) {
+  if (!given.initial_seeds.empty()) return remesh_unit_topology_first(input, given).result;
+  const auto start = std::chrono::steady_clock::now();
+  RemeshResult first = *remesh_parts(input, given, nullptr);
+  if (first.input_topology.nonmanifold_edges == 0 || first.time_limit_reached) return first;
+  // Sheets meeting along edges of three or more triangles, remeshed whole, may join beside the
+  // junction where they meet at a shallow angle (an icosphere with flaps 4.5° off it; MeshLab's
+  // conrod.stl and office_chair.obj lost their topology). Then each sheet is remeshed on its
+  // own, and the better output kept. Not first: the sheets take longer (triple_vierbein.obj at
+  // 5k, six sheets: 1.9x), and lose the junction where a sheet's own output does (one sheet
+  // passing through another, as in sub.obj).
+  const std::size_t count = std::max<std::size_t>(requested_vertex_count(input, given), 1);
+  const BranchCurves junction =
+      resample_branch_curves(input, edge_length_for(surface_area(input), count));
+  const TopologyReport in = first.input_topology;
+  const auto first_score = junction_score(first, in, junction);
+  if (std::get<0>(first_score)) return first;
+  if (given.progress) given.progress({"sheets", 0, 0, 0, seconds_since(start)});
+  RemeshSettings settings = given;
+  if (given.time_limit > 0)
+    settings.time_limit = std::max(given.time_limit - seconds_since(start), 1e-9);
+  std::optional<RemeshResult> sheets = remesh_parts(input, settings, &junction);
+  if (sheets && junction_score(*sheets, in, junction) > first_score) return std::move(*sheets);
+  return first;
 }
 
 }  // namespace cvtmesh

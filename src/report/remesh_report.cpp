@@ -55,6 +55,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["obtuse_corners_split"] = r.obtuse_corners_split;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended + r.count_grown;
   j["count_grown"] = r.count_grown;
+  j["sheets_apart"] = r.sheets_apart;
   j["vertices_added"] = r.vertices_added;
   j["links_flipped"] = r.links_flipped;
   j["tips_closed"] = r.tips_closed;
@@ -115,6 +116,12 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
         "  sizing    {} vertices asked for on top of the count: fewer did not keep the input's "
         "topology, or left its boundary loops and creases too few\n",
         r.count_grown);
+  if (r.sheets_apart > 0)
+    text += fmt::format(
+        "  topology  {} sheets remeshed apart and zipped along the edges of three or more "
+        "triangles where they meet: remeshed whole, they joined beside those edges or lost the "
+        "input's topology\n",
+        r.sheets_apart);
   text += fmt::format(
       "  sizing    edge length / target: median {:.3f}, 5th-95th percentile {:.3f}-{:.3f}\n",
       r.edge_length_ratio.median, r.edge_length_ratio.p5, r.edge_length_ratio.p95);
