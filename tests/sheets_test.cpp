@@ -66,7 +66,7 @@ TriangleMesh sphere_with_flaps(int count) {
     std::vector<Triangle> star;  // rotated to start at v
     for (Triangle t : m.triangles)
       if (std::ranges::count(t, v)) {
-        std::ranges::rotate(t, std::ranges::find(t, v));
+        std::rotate(t.begin(), std::find(t.begin(), t.end(), v), t.end());
         star.push_back(t);
       }
     if (star.size() != 6 ||

@@ -262,6 +262,7 @@ std::optional<std::vector<std::pair<Index, Index>>> zip_shared_segments(
         }
         if (g < groups.size() && at[g] == to) ++g;
       }
+      if (std::ranges::count(at, kNoIndex) > 0) return std::nullopt;  // a position not placed
       for (std::size_t k = 0; k < groups.size(); ++k) keyed.emplace_back(key + k, at[k]);
     }
     key += static_cast<Index>(groups.size());
