@@ -161,15 +161,32 @@ BranchCurves resample_branch_curves(const TriangleMesh& mesh, double spacing) {
 
 std::size_t edges_off_junction(const TriangleMesh& output, const BranchCurves& junction) {
   std::vector<Vec3> starts, stops;
-  for (const std::vector<Index>& stretch : junction.stretches)
+  std::vector<std::size_t> stretch_of;            // per grid segment
+  std::map<Vec3, std::vector<std::size_t>> ends;  // the stretches that end at a point
+  for (std::size_t k = 0; k < junction.stretches.size(); ++k) {
+    const std::vector<Index>& stretch = junction.stretches[k];
+    ends[junction.mesh.vertices[stretch.front()]].push_back(k);
+    ends[junction.mesh.vertices[stretch.back()]].push_back(k);
     for (std::size_t i = 0; i + 1 < stretch.size(); ++i) {
       starts.push_back(junction.mesh.vertices[stretch[i]]);
       stops.push_back(junction.mesh.vertices[stretch[i + 1]]);
+      stretch_of.push_back(k);
     }
+  }
   const SegmentGrid grid(std::move(starts), std::move(stops), 1e-9);
+  const auto stretches_at = [&](const Vec3& p) -> std::vector<std::size_t> {
+    if (const auto at = ends.find(p); at != ends.end()) return at->second;
+    if (const std::optional<SegmentGrid::Hit> hit = grid.find(p)) return {stretch_of[hit->segment]};
+    return {};
+  };
   const std::vector<Edge> edges = junction_edges(output).first;
   return static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [&](const Edge& e) {
-    return !grid.find(output.vertices[e[0]]) || !grid.find(output.vertices[e[1]]);
+    const Vec3 &p = output.vertices[e[0]], &q = output.vertices[e[1]];
+    const std::vector<std::size_t> a = stretches_at(p), b = stretches_at(q);
+    if (std::ranges::any_of(a, [&](std::size_t k) { return std::ranges::count(b, k) > 0; }))
+      return false;
+    // Ends on two stretches: along the junction only where it runs straight on between them.
+    return a.empty() || b.empty() || stretches_at(0.5 * (p + q)).empty();
   }));
 }
 

@@ -36,9 +36,9 @@ struct BranchCurves {
 // input without junction edges.
 BranchCurves resample_branch_curves(const TriangleMesh& mesh, double spacing);
 
-// The edges of `output` with three or more triangles that have an end off the junction's
-// stretches (farther than a round-off): edges a remesh added where its sheets met beside the
-// junction.
+// The edges of `output` with three or more triangles that do not run along the junction: no
+// stretch has both their ends (to a round-off), and their middle is off it. Such an edge is one
+// a remesh added where its sheets met beside the junction, or across a bend of it.
 std::size_t edges_off_junction(const TriangleMesh& output, const BranchCurves& junction);
 
 }  // namespace cvtmesh
