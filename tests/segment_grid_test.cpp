@@ -1,11 +1,14 @@
 // The geometry the sheets' zip stands on: which segment a point lies on (geometry/segment_grid),
-// and edge splits that keep every vertex's star (geometry/edge_splitter).
+// where along which polyline (geometry/polyline_index), and edge splits that keep every vertex's
+// star (geometry/edge_splitter).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "cvtmesh/topology.hpp"
 #include "geometry/edge_splitter.hpp"
+#include "geometry/polyline_index.hpp"
 #include "geometry/segment_grid.hpp"
 #include "support/shapes.hpp"
 
@@ -38,6 +41,42 @@ TEST(SegmentGrid, FindsTheSegmentAPointLiesOnToARoundOff) {
   EXPECT_FALSE(grid.find({2.5, 3.5, 3.5 + 1e-6}));
   EXPECT_FALSE(grid.find({0.505, 1e-6, 0}));
   EXPECT_FALSE(grid.find({20, 0, 0}));
+}
+
+TEST(PolylineIndex, GivesThePolylinesEndingAtAPointElseWhereAlongOneItLies) {
+  // Two polylines meet at (1, 0, 0); the first bends there from a step 1 long to one 3 long, the
+  // second is a closed triangle through that point.
+  const std::vector<std::vector<Vec3>> polylines = {
+      {{0, 0, 0}, {1, 0, 0}, {1, 3, 0}},
+      {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 0, 0}},
+  };
+  const PolylineIndex index(polylines, 1e-9);
+  // At an end exactly: every polyline ending there (the closed one at both of its ends).
+  // (1, 0, 0) is inside the first polyline: not reported where one ends.
+  std::vector<PolylineIndex::At> at = index.find({1, 0, 0});
+  ASSERT_EQ(at.size(), 2u);
+  EXPECT_EQ(at[0].polyline, 1u);
+  EXPECT_EQ(at[1].polyline, 1u);
+  EXPECT_EQ(at[0].t + at[1].t, 1.0);
+  at = index.find({0, 0, 0});
+  ASSERT_EQ(at.size(), 1u);
+  EXPECT_EQ(at[0].polyline, 0u);
+  EXPECT_EQ(at[0].t, 0.0);
+  EXPECT_TRUE(at[0].end);
+  at = index.find({1, 3, 0});
+  ASSERT_EQ(at.size(), 1u);
+  EXPECT_EQ(at[0].t, 1.0);
+  // Inside: the arc-length fraction, across the bend.
+  at = index.find({1, 1.5, 0});
+  ASSERT_EQ(at.size(), 1u);
+  EXPECT_EQ(at[0].polyline, 0u);
+  EXPECT_NEAR(at[0].t, 2.5 / 4, 1e-12);
+  EXPECT_FALSE(at[0].end);
+  at = index.find({1.5, 0, 0});
+  ASSERT_EQ(at.size(), 1u);
+  EXPECT_EQ(at[0].polyline, 1u);
+  EXPECT_NEAR(at[0].t, 0.5 / (2 + std::sqrt(2.0)), 1e-12);
+  EXPECT_TRUE(index.find({0.5, 1e-6, 0}).empty());
 }
 
 TEST(EdgeSplitter, SplitsEveryTriangleOnTheEdgeAndKeepsTheStars) {

@@ -57,16 +57,13 @@ CreaseScale::CreaseScale(const TriangleMesh& mesh, const std::vector<EdgeUse>& u
       uses_(uses),
       across_(3 * mesh.triangles.size(), kNone),
       on_boundary_(3 * mesh.triangles.size(), 0) {
-  for (std::size_t k = 0; k < uses.size();) {
-    std::size_t end = k;
-    while (end < uses.size() && uses[end].edge == uses[k].edge) ++end;
+  for_each_edge(uses, [&](std::size_t k, std::size_t end) {
     if (end - k == 1) on_boundary_[uses[k].corner] = 1;
     if (end - k == 2 && !std::binary_search(barrier.begin(), barrier.end(), uses[k].edge)) {
       across_[uses[k].corner] = uses[k + 1].corner / 3;
       across_[uses[k + 1].corner] = uses[k].corner / 3;
     }
-    k = end;
-  }
+  });
   around_start_.assign(mesh.vertices.size() + 1, 0);
   for (const Triangle& t : mesh.triangles)
     for (Index v : t) ++around_start_[v + 1];

@@ -272,9 +272,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
   std::vector<Edge> sharp_edges;     // kept for being sharp, and for nothing else
   std::vector<Edge> boundary_edges;  // both sorted, as `uses` is
   const std::vector<EdgeUse> uses = edge_uses(mesh);
-  for (std::size_t k = 0; k < uses.size();) {
-    std::size_t end = k;
-    while (end < uses.size() && uses[end].edge == uses[k].edge) ++end;
+  for_each_edge(uses, [&](std::size_t k, std::size_t end) {
     const std::size_t count = end - k;
     if (count != 2) {
       f.edges.push_back(uses[k].edge);
@@ -284,8 +282,7 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
       f.edges.push_back(uses[k].edge);
       sharp_edges.push_back(uses[k].edge);
     }
-    k = end;
-  }
+  });
   for (const Edge& given : settings.user_edges) {
     const auto n = mesh.vertices.size();
     if (given[0] >= n || given[1] >= n)

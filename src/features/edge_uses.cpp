@@ -36,17 +36,15 @@ std::optional<std::vector<BoundaryLoop>> boundary_loops(const TriangleMesh& mesh
   // from it goes back along that edge.
   constexpr std::size_t kNone = ~std::size_t{0};
   std::vector<std::size_t> into(mesh.vertices.size(), kNone);
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
-    if (j == i + 1) {
-      const Triangle& t = mesh.triangles[uses[i].triangle()];
-      const Index b = t[(uses[i].corner + 1) % 3];
-      if (into[b] != kNone) return std::nullopt;
-      into[b] = i;
-    }
-    i = j;
-  }
+  bool defined = true;
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    if (j != i + 1) return;
+    const Triangle& t = mesh.triangles[uses[i].triangle()];
+    const Index b = t[(uses[i].corner + 1) % 3];
+    if (into[b] != kNone) defined = false;
+    into[b] = i;
+  });
+  if (!defined) return std::nullopt;
   std::vector<BoundaryLoop> loops;
   std::vector<bool> seen(mesh.vertices.size(), false);
   for (Index start = 0; start < into.size(); ++start) {

@@ -26,6 +26,17 @@ struct EdgeUse {
 // Every triangle's three edges, sorted by edge, then corner.
 std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh);
 
+// Calls visit(i, j) for each edge's run of uses, uses[i] to uses[j - 1] (j - i triangles have
+// it), in order.
+template <class Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+    for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j) {
+    }
+    visit(i, j);
+  }
+}
+
 // The distinct edges of a mesh, each with the smaller vertex id first, sorted.
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh);
 

@@ -31,13 +31,10 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
   constexpr std::size_t kNone = ~std::size_t{0};
   std::vector<std::size_t> other(uses.size(), kNone);
   std::vector<bool> boundary(mesh.vertices.size(), false);
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    while (j < uses.size() && uses[j].edge == uses[i].edge) ++j;
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
     if (j - i == 1) boundary[uses[i].edge[0]] = boundary[uses[i].edge[1]] = true;
     if (j - i == 2) other[i] = i + 1, other[i + 1] = i;
-    i = j;
-  }
+  });
   // The obtuse corners to split: triangle t = (a, b, c) with the obtuse angle at c, u = (b, a, d)
   // across edge a-b, and t's Q.
   struct Candidate {

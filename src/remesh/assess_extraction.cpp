@@ -79,14 +79,12 @@ std::vector<bool> branch_seeds(const MendContext& m, const SpecialEdges& special
 }  // namespace
 
 SpecialEdges special_edges(const MendContext& m) {
-  std::vector<Edge> uses;  // every triangle's edges, sorted, with repeats
-  for (const EdgeUse& use : edge_uses(m.surface)) uses.push_back(use.edge);
+  const std::vector<EdgeUse> uses = edge_uses(m.surface);
   std::vector<Edge> boundary, branch;
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {  // runs of equal edges
-    while (j < uses.size() && uses[j] == uses[i]) ++j;
-    if (j - i == 1) boundary.push_back(uses[i]);
-    if (j - i >= 3) branch.push_back(uses[i]);
-  }
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    if (j - i == 1) boundary.push_back(uses[i].edge);
+    if (j - i >= 3) branch.push_back(uses[i].edge);
+  });
   const auto curves_along = [&](const std::vector<Edge>& edges) {
     std::vector<bool> along(m.features.curves.size());
     for (std::size_t c = 0; c < along.size(); ++c) {

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "geometry/edge_splitter.hpp"
-#include "geometry/segment_grid.hpp"
+#include "geometry/polyline_index.hpp"
 
 namespace cvtmesh {
 
@@ -59,14 +59,12 @@ std::pair<std::vector<Edge>, std::vector<std::size_t>> junction_edges(const Tria
   std::vector<Edge> branch;
   std::vector<std::size_t> count;
   const std::vector<EdgeUse> uses = edge_uses(mesh);
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-    for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j) {
-    }
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
     if (j - i > 2) {
       branch.push_back(uses[i].edge);
       count.push_back(j - i);
     }
-  }
+  });
   return {branch, count};
 }
 
@@ -160,24 +158,16 @@ BranchCurves resample_branch_curves(const TriangleMesh& mesh, double spacing) {
 }
 
 std::size_t edges_off_junction(const TriangleMesh& output, const BranchCurves& junction) {
-  std::vector<Vec3> starts, stops;
-  std::vector<std::size_t> stretch_of;            // per grid segment
-  std::map<Vec3, std::vector<std::size_t>> ends;  // the stretches that end at a point
-  for (std::size_t k = 0; k < junction.stretches.size(); ++k) {
-    const std::vector<Index>& stretch = junction.stretches[k];
-    ends[junction.mesh.vertices[stretch.front()]].push_back(k);
-    ends[junction.mesh.vertices[stretch.back()]].push_back(k);
-    for (std::size_t i = 0; i + 1 < stretch.size(); ++i) {
-      starts.push_back(junction.mesh.vertices[stretch[i]]);
-      stops.push_back(junction.mesh.vertices[stretch[i + 1]]);
-      stretch_of.push_back(k);
-    }
+  std::vector<std::vector<Vec3>> polylines;
+  for (const std::vector<Index>& stretch : junction.stretches) {
+    polylines.emplace_back();
+    for (const Index v : stretch) polylines.back().push_back(junction.mesh.vertices[v]);
   }
-  const SegmentGrid grid(std::move(starts), std::move(stops), 1e-9);
-  const auto stretches_at = [&](const Vec3& p) -> std::vector<std::size_t> {
-    if (const auto at = ends.find(p); at != ends.end()) return at->second;
-    if (const std::optional<SegmentGrid::Hit> hit = grid.find(p)) return {stretch_of[hit->segment]};
-    return {};
+  const PolylineIndex index(polylines, 1e-9);
+  const auto stretches_at = [&](const Vec3& p) {
+    std::vector<std::size_t> found;
+    for (const PolylineIndex::At& at : index.find(p)) found.push_back(at.polyline);
+    return found;
   };
   const std::vector<Edge> edges = junction_edges(output).first;
   return static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [&](const Edge& e) {

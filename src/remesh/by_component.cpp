@@ -69,36 +69,32 @@ std::vector<Component> split_components(const TriangleMesh& mesh,
     return 3 * t + static_cast<std::size_t>(f[0] == v ? 0 : f[1] == v ? 1 : 2);
   };
   std::vector<Edge> branch;  // edges of three or more triangles, sorted
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-    for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j)
-      if (!passed_by) sets.unite(uses[j].triangle(), uses[i].triangle());
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    if (!passed_by)
+      for (std::size_t k = i + 1; k < j; ++k) sets.unite(uses[k].triangle(), uses[i].triangle());
     if (passed_by && j - i > 2) {  // undone: the edge's triangles join as sheets only
       branch.push_back(uses[i].edge);
-      continue;
+      return;
     }
     for (const Index v : uses[i].edge) {
       if (j - i == 2) fans.unite(corner(uses[i].triangle(), v), corner(uses[i + 1].triangle(), v));
       if (j - i > 2) branching[v] = true;
     }
-  }
+  });
   if (passed_by) {
     // Sheets: triangles joined across edges of two triangles; then one sheet's triangles on a
     // junction edge joined in their fans.
-    for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-      for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j) {
-      }
+    for_each_edge(uses, [&](std::size_t i, std::size_t j) {
       if (j - i == 2) sets.unite(uses[i + 1].triangle(), uses[i].triangle());
-    }
-    for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-      for (j = i + 1; j < uses.size() && uses[j].edge == uses[i].edge; ++j) {
-      }
-      if (j - i <= 2) continue;
+    });
+    for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+      if (j - i <= 2) return;
       for (std::size_t k = i; k < j; ++k)
         for (std::size_t l = k + 1; l < j; ++l)
           if (sets.find(uses[k].triangle()) == sets.find(uses[l].triangle()))
             for (const Index v : uses[i].edge)
               fans.unite(corner(uses[k].triangle(), v), corner(uses[l].triangle(), v));
-    }
+    });
   }
   std::vector<Index> component_of_root(triangles, kNoIndex);
   std::vector<std::vector<Index>> triangles_of;  // per component, in input order

@@ -6,7 +6,7 @@
 
 #include "geometry/angle.hpp"
 #include "geometry/edge_splitter.hpp"
-#include "geometry/segment_grid.hpp"
+#include "geometry/polyline_index.hpp"
 
 namespace cvtmesh {
 
@@ -174,43 +174,26 @@ std::optional<std::vector<std::pair<Index, Index>>> zip_shared_segments(
   // Every sheet's vertices on the stretches: at a stretch's end exactly (a corner, shared by the
   // stretches that end there), or inside one to round-off (curve seeds are projections onto the
   // input's edges).
-  std::map<Vec3, std::vector<std::size_t>> ends;  // stretches by end position
-  std::vector<Vec3> starts, stops;
-  std::vector<std::pair<std::size_t, std::size_t>> piece;  // per grid segment: stretch, step
-  std::vector<std::vector<double>> arcs(segments.size());
-  for (std::size_t k = 0; k < segments.size(); ++k) {
-    const std::vector<Vec3>& points = segments[k].points;
+  std::vector<std::vector<Vec3>> polylines;
+  for (const SharedSegment& segment : segments) {
+    const std::vector<Vec3>& points = segment.points;
     if (points.size() < 2 || points.front() == points.back()) return std::nullopt;
-    ends[points.front()].push_back(k);
-    ends[points.back()].push_back(k);
-    arcs[k] = {0};
-    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-      arcs[k].push_back(arcs[k].back() + distance(points[i], points[i + 1]));
-      starts.push_back(points[i]);
-      stops.push_back(points[i + 1]);
-      piece.emplace_back(k, i);
-    }
-    if (!(arcs[k].back() > 0)) return std::nullopt;
+    double length = 0;
+    for (std::size_t i = 0; i + 1 < points.size(); ++i)
+      length += distance(points[i], points[i + 1]);
+    if (!(length > 0)) return std::nullopt;
+    polylines.push_back(points);
   }
-  const SegmentGrid grid(std::move(starts), std::move(stops), 1e-9);
+  const PolylineIndex index(polylines, 1e-9);
   const auto has = [&](std::size_t k, std::size_t sheet) {
     return std::ranges::find(segments[k].sheets, sheet) != segments[k].sheets.end();
   };
   std::vector<std::vector<OnSegment>> on_stretch(segments.size());
   for (std::size_t c = 0; c < sheets.size(); ++c)
-    for (Index v = sheets[c].first; v < sheets[c].end; ++v) {
-      const Vec3& p = mesh.vertices[v];
-      if (const auto at = ends.find(p); at != ends.end()) {
-        for (const std::size_t k : at->second)
-          if (has(k, c)) on_stretch[k].push_back({p == segments[k].points.front() ? 0.0 : 1.0, v});
-        continue;
-      }
-      const std::optional<SegmentGrid::Hit> hit = grid.find(p);
-      if (!hit) continue;
-      const auto [k, i] = piece[hit->segment];
-      const double t = (arcs[k][i] + hit->u * (arcs[k][i + 1] - arcs[k][i])) / arcs[k].back();
-      if (has(k, c) && t > 0 && t < 1) on_stretch[k].push_back({t, v});
-    }
+    for (Index v = sheets[c].first; v < sheets[c].end; ++v)
+      for (const PolylineIndex::At& at : index.find(mesh.vertices[v]))
+        if (has(at.polyline, c) && (at.end || (at.t > 0 && at.t < 1)))
+          on_stretch[at.polyline].push_back({at.t, v});
   // All chains found first: splitting one stretch's steps never touches another's.
   std::vector<std::vector<std::vector<OnSegment>>> all_chains;
   for (std::size_t k = 0; k < segments.size(); ++k) {
