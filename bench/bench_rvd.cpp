@@ -9,7 +9,10 @@
 //   BM_RvdShuffledInput: igea's vertices and triangles shuffled, 10k seeds, 1 thread: an RVD pass
 //     on the file's order (stored_s), on the shuffled copy (shuffled_s), and on the shuffled copy
 //     sorted by spatially_sorted, the sort included (sorted_s); sorted_over_stored is the
-//     order-independence figure (issue 19: at most 1.15).
+//     order-independence figure (issue 19: at most 1.15), pass_sorted_over_stored the same
+//     without the sort, which a remesh makes once for all its passes.
+//   BM_SpatialSort/T: the sort alone (spatially_sorted) of igea shuffled, on T threads, against
+//     an RVD pass on its output with as many (sort_over_pass): what a remesh pays once.
 //   BM_RvdCoarseInput/N/T: a cube of 12 triangles, N random seeds, each triangle thousands of
 //     cells wide (issue 19: coarse inputs cost what their cells cost); as above.
 //   BM_RvdGradedSeeds/N: the same cube, N seeds of which three quarters crowd one corner (a
@@ -195,9 +198,36 @@ void BM_RvdShuffledInput(benchmark::State& state) {
     state.counters["sort_s"] = sort_s;
     state.counters["sorted_s"] = sort_s + after_sort.rvd_s;
     state.counters["sorted_over_stored"] = (sort_s + after_sort.rvd_s) / as_stored.rvd_s;
+    state.counters["pass_sorted_over_stored"] = after_sort.rvd_s / as_stored.rvd_s;
   }
 }
 BENCHMARK(BM_RvdShuffledInput)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_SpatialSort(benchmark::State& state) {
+  const auto path = testing::shared_data() / "igea.ply";
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("igea.ply not found (set CVTMESH_SHARED_DATA)");
+    return;
+  }
+  const TriangleMesh mixed = testing::shuffled(read_mesh(path), 7);
+  const auto seeds = sample_surface(mixed, 10'000, 1);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    const auto start = Clock::now();
+    const SpatiallySorted sorted = spatially_sorted(mixed);
+    const double sort_s = seconds(start);
+    const Pass pass = rvd_pass(sorted.mesh, seeds);
+    state.SetIterationTime(sort_s);
+    state.counters["sort_over_pass"] = sort_s / pass.rvd_s;
+  }
+}
+BENCHMARK(BM_SpatialSort)
+    ->Arg(1)
+    ->Arg(2)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 void BM_RvdCoarseInput(benchmark::State& state) {
   random_seeds_pass(state, testing::cube(1));

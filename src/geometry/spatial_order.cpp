@@ -1,9 +1,13 @@
 #include "geometry/spatial_order.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
 #include <tuple>
+#include <utility>
 
 namespace cvtmesh {
 
@@ -46,17 +50,30 @@ std::vector<std::uint64_t> morton_keys(const std::vector<Vec3>& points) {
   return key;
 }
 
+// Indices 0..n-1 sorted by their Morton keys, ties broken by `tied_before(a, b)`, a strict total
+// order: the order is unique, so sorting in parallel gives the one a serial sort gives. The keys
+// travel with the indices, so that the comparisons read memory in runs (igea's 135k vertices and
+// 270k triangles took 0.085 s sorted through an index with a tuple comparison, serially).
+template <class TiedBefore>
+std::vector<Index> sorted_by_key(const std::vector<std::uint64_t>& key,
+                                 const TiedBefore& tied_before) {
+  std::vector<std::pair<std::uint64_t, Index>> keyed(key.size());
+  for (std::size_t i = 0; i < key.size(); ++i) keyed[i] = {key[i], static_cast<Index>(i)};
+  tbb::parallel_sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : tied_before(a.second, b.second);
+  });
+  std::vector<Index> order(keyed.size());
+  for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+  return order;
+}
+
 }  // namespace
 
 std::vector<Index> spatial_order(const std::vector<Vec3>& points) {
-  const std::vector<std::uint64_t> key = morton_keys(points);
-  std::vector<Index> order(points.size());
-  std::iota(order.begin(), order.end(), Index{0});
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+  return sorted_by_key(morton_keys(points), [&](Index a, Index b) {
     const Vec3 &p = points[a], &q = points[b];
-    return std::tie(key[a], p.x, p.y, p.z, a) < std::tie(key[b], q.x, q.y, q.z, b);
+    return std::tie(p.x, p.y, p.z, a) < std::tie(q.x, q.y, q.z, b);
   });
-  return order;
 }
 
 SpatiallySorted spatially_sorted(const TriangleMesh& mesh) {
@@ -70,24 +87,22 @@ SpatiallySorted spatially_sorted(const TriangleMesh& mesh) {
   }
   std::vector<Triangle> triangles(mesh.triangles.size());
   std::vector<Vec3> centroids(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  // Each triangle on its own (a shuffled input's reads here are scattered: a third of the sort).
+  tbb::parallel_for(std::size_t{0}, mesh.triangles.size(), [&](std::size_t t) {
     Triangle f = mesh.triangles[t];
     for (Index& v : f) v = sorted.new_id[v];
     std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
     triangles[t] = f;
     const auto& v = sorted.mesh.vertices;
     centroids[t] = (1.0 / 3) * (v[f[0]] + v[f[1]] + v[f[2]]);
-  }
+  });
   // Ties (triangles with the same centroid: the same vertices, or mirrored ones) are broken by
   // the new vertex ids, so that the order does not depend on the given one.
-  const std::vector<std::uint64_t> key = morton_keys(centroids);
-  std::vector<Index> triangle_order(triangles.size());
-  std::iota(triangle_order.begin(), triangle_order.end(), Index{0});
-  std::sort(triangle_order.begin(), triangle_order.end(), [&](Index a, Index b) {
-    const Vec3 &p = centroids[a], &q = centroids[b];
-    return std::tie(key[a], p.x, p.y, p.z, triangles[a]) <
-           std::tie(key[b], q.x, q.y, q.z, triangles[b]);
-  });
+  const std::vector<Index> triangle_order =
+      sorted_by_key(morton_keys(centroids), [&](Index a, Index b) {
+        const Vec3 &p = centroids[a], &q = centroids[b];
+        return std::tie(p.x, p.y, p.z, triangles[a]) < std::tie(q.x, q.y, q.z, triangles[b]);
+      });
   sorted.mesh.triangles.reserve(triangles.size());
   for (const Index t : triangle_order) sorted.mesh.triangles.push_back(triangles[t]);
   return sorted;
