@@ -1,13 +1,15 @@
 // Boundary corners whose one triangle holds an obtuse angle (finish/split_obtuse_corners): the
 // edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
 // across a feature edge, where the surface is far, at an inner vertex or under 100°. Under the bar
-// (ObtuseCorners::under_bar): inner vertices too, the worst first, few at a time.
+// (ObtuseCorners::under_bar): inner vertices too, the worst first, few at a time; given the
+// curves, a feature or boundary edge across halved on its curve.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "cvtmesh/topology.hpp"
+#include "features/edge_uses.hpp"
 #include "finish/split_obtuse_corners.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
@@ -108,6 +110,73 @@ TEST(SplitObtuseCorners, UnderTheBarTheWorstIsSplitFirstAndOnePerHundredVertices
   TriangleMesh m = concatenate(inner_corner(114), inner_corner(124, 10));
   EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar), 1u);
   EXPECT_EQ(m.vertices.back(), (Vec3{10, 0, 0}));
+}
+
+TEST(SplitObtuseCorners, UnderTheBarAFeatureEdgeAcrossIsHalvedOnItsCurve) {
+  // The inner corner's edge across, 0-1, is a crease's: no flip takes it. Given the curves, it
+  // is halved at its foot on the crease, which becomes a vertex of that curve, and the edge its
+  // two halves; without them, or with its vertices on two curves, it stays.
+  TriangleMesh m = inner_corner(114);
+  Features crease;
+  crease.edges = {Edge{0, 1}};
+  crease.curves = {{{0, 1}, false}};
+  const CurveProjector curves(m, crease);
+  const SurfaceProjector plane(m);
+  TriangleMesh alone = m;
+  EXPECT_EQ(split_obtuse_corners(alone, crease.edges, plane, ObtuseCorners::under_bar), 0u);
+  std::vector<VertexSupport> supports(m.vertices.size());
+  supports[0] = supports[1] = {VertexSupport::Kind::curve, 0};
+  std::vector<VertexSupport> on_two = supports;
+  on_two[1].curve = 1;
+  std::vector<Edge> edges = crease.edges;
+  CurveSplits apart{curves, on_two, edges};
+  TriangleMesh two = m;
+  EXPECT_EQ(split_obtuse_corners(two, crease.edges, plane, ObtuseCorners::under_bar, &apart), 0u);
+  const TopologyReport before = analyze_topology(m);
+  CurveSplits along{curves, supports, edges};
+  EXPECT_EQ(split_obtuse_corners(m, crease.edges, plane, ObtuseCorners::under_bar, &along), 1u);
+  const auto mid = static_cast<Index>(m.vertices.size() - 1);
+  EXPECT_EQ(m.vertices[mid], (Vec3{0, 0, 0}));
+  ASSERT_EQ(supports.size(), m.vertices.size());
+  EXPECT_EQ(supports[mid].kind, VertexSupport::Kind::curve);
+  EXPECT_EQ(supports[mid].curve, 0u);
+  EXPECT_EQ(edges, (std::vector<Edge>{Edge{0, mid}, Edge{1, mid}}));
+  const TopologyReport after = analyze_topology(m);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_TRUE(after.consistently_oriented);
+  EXPECT_TRUE(same_topology(after, before));
+  for (const Triangle& t : m.triangles) {
+    const auto [a, b, c] = std::array{m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};
+    EXPECT_GT(cross(b - a, c - a).z, 0) << "orientation kept";
+  }
+}
+
+TEST(SplitObtuseCorners, UnderTheBarABoundaryEdgeAcrossIsHalvedOnItsLoop) {
+  // An ear of 130° whose edge across is the boundary (the strip without its lower triangle), its
+  // corner an inner vertex: the boundary edge halved, one triangle becoming two.
+  TriangleMesh m = inner_corner(130);
+  m.triangles.erase(m.triangles.begin() + 1);  // (1, 0, 3): vertex 3 left unused
+  Features loop;
+  loop.edges = sorted_edges(m);
+  std::erase_if(loop.edges, [&](const Edge& e) {
+    return e != Edge{0, 1} && e != Edge{0, 4} && e != Edge{4, 5} && e != Edge{1, 5};
+  });
+  loop.curves = {{{0, 1, 5, 4}, true}};
+  const CurveProjector curves(m, loop);
+  std::vector<VertexSupport> supports(m.vertices.size());
+  for (const Index v : {0u, 1u, 4u, 5u}) supports[v] = {VertexSupport::Kind::curve, 0};
+  std::vector<Edge> edges = loop.edges;
+  CurveSplits along{curves, supports, edges};
+  const std::size_t triangles = m.triangles.size();
+  EXPECT_EQ(
+      split_obtuse_corners(m, loop.edges, SurfaceProjector(m), ObtuseCorners::under_bar, &along),
+      1u);
+  EXPECT_EQ(m.triangles.size(), triangles + 1);
+  EXPECT_EQ(m.vertices.back(), (Vec3{0, 0, 0}));
+  EXPECT_EQ(edges.size(), loop.edges.size() + 1);
+  const TopologyReport after = analyze_topology(m);
+  EXPECT_TRUE(after.is_manifold());
+  EXPECT_EQ(after.boundary_loops, 1u);
 }
 
 }  // namespace

@@ -232,18 +232,20 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   result.valence_three_removed =
       remove_valence_three(result.mesh, removable_in(supports), projector);
   // Obtuse triangles the sweeps left under the bar, at any vertex (an interior vertex of valence 7
-  // among smaller cells, where the sizes grade down to a hole): the edge across from the obtuse
-  // angle halved, then swept again (all over the mesh the first time, for whatever the first sweeps
-  // left, halved or not), and kept where that makes the worst triangle better.
+  // among smaller cells, where the sizes grade down to a hole, or one just off a feature curve):
+  // the edge across from the obtuse angle halved (on its curve, if it is a feature edge), then
+  // swept again (all over the mesh the first time, for whatever the first sweeps left, halved or
+  // not), and kept where that makes the worst triangle better.
   auto kept_shapes = bar_shapes(result.mesh);
   for (int round = 0; round < kHalvingRounds; ++round) {
     TriangleMesh halved = result.mesh;
-    const std::size_t added =
-        split_obtuse_corners(halved, result.feature_edges, projector, ObtuseCorners::under_bar);
-    if (added == 0 && round > 0) break;
     std::vector<VertexSupport> halved_supports = supports;
-    halved_supports.resize(halved.vertices.size());
     std::vector<Edge> halved_features = result.feature_edges;
+    CurveSplits along{curves, halved_supports, halved_features};
+    const std::size_t added = split_obtuse_corners(halved, result.feature_edges, projector,
+                                                   ObtuseCorners::under_bar, &along);
+    if (added == 0 && round > 0) break;
+    halved_supports.resize(halved.vertices.size());
     const ShapeImprovement more =
         improve_shapes(halved, projector, &curves, halved_supports, halved_features,
                        settings.shape_sweeps, traced_tips(halved, narrow, reach),

@@ -11,6 +11,8 @@
 
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/mesh.hpp"
+#include "features/curve_projector.hpp"
+#include "finish/improve_shapes.hpp"
 
 namespace cvtmesh {
 
@@ -22,13 +24,28 @@ enum class ObtuseCorners {
   under_bar,    // at any vertex, in a triangle under the bar's Q (those the shape sweeps left)
 };
 
+// Where the edge across an obtuse corner is a feature edge, a flip cannot take it either: a
+// vertex just off a crease, or off a boundary, facing one of its long edges (mech-holes-shark.off
+// at 2k and 5k had its worst triangles so, 127-130°). `along` lets such an edge be halved too, its
+// middle put on its curve: the curve of its vertices in `supports` (per vertex of the mesh), the
+// new vertex appended there as a vertex of that curve, and the edge replaced by its halves in
+// `feature_edges` (sorted).
+struct CurveSplits {
+  const CurveProjector& curves;
+  std::vector<VertexSupport>& supports;
+  std::vector<Edge>& feature_edges;
+};
+
 // For each triangle with an angle over 100° at a corner of `which` kind, halves the edge across
 // from it where that edge has two triangles, used in opposite directions, and is no feature edge
 // (`features`, sorted) and its middle lies within a quarter of its length of `surface`: the
 // nearest point there is appended to the vertices, and the two triangles become four, in their
-// orientation. A triangle is split once at most. Returns the vertices added.
+// orientation. With `along`, a feature edge of two triangles or one (a boundary edge) is halved
+// as well where its middle's foot on its curve lies that near: its triangles become twice as
+// many. A triangle is split once at most. Returns the vertices added.
 std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
                                  const SurfaceProjector& surface,
-                                 ObtuseCorners which = ObtuseCorners::at_boundary);
+                                 ObtuseCorners which = ObtuseCorners::at_boundary,
+                                 CurveSplits* along = nullptr);
 
 }  // namespace cvtmesh
