@@ -245,7 +245,6 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     const std::size_t added = split_obtuse_corners(halved, result.feature_edges, projector,
                                                    ObtuseCorners::under_bar, &along);
     if (added == 0 && round > 0) break;
-    halved_supports.resize(halved.vertices.size());
     const ShapeImprovement more =
         improve_shapes(halved, projector, &curves, halved_supports, halved_features,
                        settings.shape_sweeps, traced_tips(halved, narrow, reach),
