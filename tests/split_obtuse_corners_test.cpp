@@ -2,7 +2,7 @@
 // edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
 // across a feature edge, where the surface is far, at an inner vertex or under 100°. Under the bar
 // (ObtuseCorners::under_bar): inner vertices too, the worst first, few at a time; given the
-// curves, a feature or boundary edge across halved on its curve.
+// curves, a feature or boundary edge across halved on its curve; none at a narrow input angle.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,6 +110,23 @@ TEST(SplitObtuseCorners, UnderTheBarTheWorstIsSplitFirstAndOnePerHundredVertices
   TriangleMesh m = concatenate(inner_corner(114), inner_corner(124, 10));
   EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar), 1u);
   EXPECT_EQ(m.vertices.back(), (Vec3{10, 0, 0}));
+}
+
+TEST(SplitObtuseCorners, UnderTheBarNothingAtANarrowInputAngle) {
+  // The 124° corner's triangle has a vertex at a narrow angle: held to that angle, not to the bar,
+  // so the 114° one is split in its stead.
+  TriangleMesh m = concatenate(inner_corner(114), inner_corner(124, 10));
+  std::vector<bool> at_narrow(m.vertices.size(), false);
+  for (Index v = 0; v < m.vertices.size(); ++v) at_narrow[v] = m.vertices[v].x > 5;
+  EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar, nullptr,
+                                 &at_narrow),
+            1u);
+  EXPECT_EQ(m.vertices.back(), (Vec3{0, 0, 0}));
+  std::fill(at_narrow.begin(), at_narrow.end(), true);
+  at_narrow.push_back(true);
+  EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar, nullptr,
+                                 &at_narrow),
+            0u);
 }
 
 TEST(SplitObtuseCorners, UnderTheBarAFeatureEdgeAcrossIsHalvedOnItsCurve) {
