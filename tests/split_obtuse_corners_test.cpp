@@ -116,14 +116,14 @@ TEST(SplitObtuseCorners, UnderTheBarNothingAtANarrowInputAngle) {
   // The 124° corner's triangle has a vertex at a narrow angle: held to that angle, not to the bar,
   // so the 114° one is split in its stead.
   TriangleMesh m = concatenate(inner_corner(114), inner_corner(124, 10));
-  std::vector<bool> at_narrow(m.vertices.size(), false);
-  for (Index v = 0; v < m.vertices.size(); ++v) at_narrow[v] = m.vertices[v].x > 5;
+  std::vector<double> at_narrow(m.vertices.size(), 0);
+  for (Index v = 0; v < m.vertices.size(); ++v) at_narrow[v] = m.vertices[v].x > 5 ? 20 : 0;
   EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar, nullptr,
                                  &at_narrow),
             1u);
   EXPECT_EQ(m.vertices.back(), (Vec3{0, 0, 0}));
-  std::fill(at_narrow.begin(), at_narrow.end(), true);
-  at_narrow.push_back(true);
+  std::fill(at_narrow.begin(), at_narrow.end(), 20);
+  at_narrow.push_back(20);
   EXPECT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar, nullptr,
                                  &at_narrow),
             0u);

@@ -61,9 +61,7 @@ BarShapes bar_shapes(const TriangleMesh& m, const std::vector<NarrowAngle>& narr
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto [p, q, r] = m.corners(t);
     const MinShape s = min_shape(p, q, r);
-    double input = 0;
-    for (const Index v : m.triangles[t])
-      if (angle_at[v] > 0) input = input == 0 ? angle_at[v] : std::min(input, angle_at[v]);
+    const double input = narrow_angle_at(m.triangles[t], angle_at);
     all.add(WorstShape{s.quality, s.min_angle / 60});
     if (input > 0) {
       shapes.quality_at = std::min(shapes.quality_at, s.quality);
@@ -75,14 +73,6 @@ BarShapes bar_shapes(const TriangleMesh& m, const std::vector<NarrowAngle>& narr
   }
   shapes.worst_all = all.score();
   return shapes;
-}
-
-std::vector<bool> near_narrow_angles(const TriangleMesh& mesh,
-                                     const std::vector<NarrowAngle>& narrow, double reach) {
-  const std::vector<double> angle_at = narrow_angle_at_vertices(mesh, narrow, reach);
-  std::vector<bool> near(angle_at.size());
-  for (std::size_t v = 0; v < near.size(); ++v) near[v] = angle_at[v] > 0;
-  return near;
 }
 
 bool shaped_better(const BarShapes& a, const BarShapes& b) {

@@ -28,11 +28,6 @@ struct BarShapes {
 BarShapes bar_shapes(const TriangleMesh& mesh, const std::vector<NarrowAngle>& narrow,
                      double reach);
 
-// Per vertex, whether it is at a narrow angle, as bar_shapes has it: its triangles are held to
-// the input angle, not to the bar.
-std::vector<bool> near_narrow_angles(const TriangleMesh& mesh,
-                                     const std::vector<NarrowAngle>& narrow, double reach);
-
 // Whether `a` is shaped better than `b`: away from narrow angles, fewer triangles under the bar, or
 // as many and a better worst Q and θmin; and no worse at narrow angles, else (each better in one
 // part) a better worst triangle over all.

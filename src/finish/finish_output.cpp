@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <span>
 #include <tuple>
@@ -222,8 +223,9 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   Round current{result.mesh, result.feature_edges, supports, shapes};
   Round best = current;
   BarShapes best_shapes = bar_shapes(best.mesh, narrow, reach);
-  // The halvings of a round from `from`, all or (`held`) none at a narrow angle.
-  const auto halved = [&](const Round& from, const std::vector<bool>* held) {
+  // The halvings of a round from `from`, all or (`held`: narrow_angle_at_vertices) none at a
+  // narrow angle.
+  const auto halved = [&](const Round& from, const std::vector<double>* held) {
     Round next = from;
     CurveSplits along{curves, next.supports, next.features};
     next.added += split_obtuse_corners(next.mesh, from.features, projector,
@@ -252,12 +254,15 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     // gain (lion.off at 5k: 39.2° away from its 8° tip for none, 40.0° without them; fandisk.off
     // adaptive at 2k, 38.8° and 40.2°), and help at the angle elsewhere (mech-holes-shark.off at
     // 5k: Q 0.41 -> 0.52 there): the round again without them where it is better nowhere with them.
-    const std::vector<bool> at_narrow = near_narrow_angles(current.mesh, narrow, reach);
-    Round held = halved(current, &at_narrow);
-    const bool held_differs = held.mesh.triangles != all.mesh.triangles;
+    std::optional<Round> held;
+    if (!narrow.empty()) {
+      const std::vector<double> narrow_at = narrow_angle_at_vertices(current.mesh, narrow, reach);
+      held = halved(current, &narrow_at);
+      if (held->mesh.triangles == all.mesh.triangles) held.reset();
+    }
     auto [next, next_shapes, verdict] = swept(std::move(all));
-    if (verdict == Verdict::no_better && held_differs) {
-      auto [other, other_shapes, other_verdict] = swept(std::move(held));
+    if (verdict == Verdict::no_better && held) {
+      auto [other, other_shapes, other_verdict] = swept(std::move(*held));
       if (other_verdict < verdict) {
         next = std::move(other);
         next_shapes = other_shapes;

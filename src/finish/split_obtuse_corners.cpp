@@ -9,6 +9,7 @@
 #include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
+#include "quality/narrow_angles.hpp"
 
 namespace cvtmesh {
 
@@ -43,7 +44,7 @@ std::optional<std::uint32_t> curve_of(const std::vector<VertexSupport>& supports
 
 std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
                                  const SurfaceProjector& surface, ObtuseCorners which,
-                                 CurveSplits* along, const std::vector<bool>* at_narrow) {
+                                 CurveSplits* along, const std::vector<double>* narrow_at) {
   const std::vector<EdgeUse> uses = edge_uses(mesh);  // sorted by edge
   // Per use, its edge's other use: itself for a boundary edge, none past two uses.
   constexpr std::size_t kNone = ~std::size_t{0};
@@ -85,7 +86,7 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
     const Index d = across ? fu[(l + 2) % 3] : kNoIndex;
     if (across && (fu[l] != b || fu[(l + 1) % 3] != a || d == c)) continue;
     if (which == ObtuseCorners::at_boundary && !boundary[c]) continue;
-    if (at_narrow && ((*at_narrow)[a] || (*at_narrow)[b] || (*at_narrow)[c])) continue;
+    if (narrow_at && narrow_angle_at(ft, *narrow_at) > 0) continue;
     const Vec3& p = mesh.vertices[c];
     if (!(angle_deg(mesh.vertices[a] - p, mesh.vertices[b] - p) > kObtuseDeg)) continue;
     // Q only for obtuse corners: each triangle comes up once per edge, and few are obtuse.

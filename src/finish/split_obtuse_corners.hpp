@@ -42,14 +42,15 @@ struct CurveSplits {
 // nearest point there is appended to the vertices, and the two triangles become four, in their
 // orientation. With `along`, a feature edge of two triangles or one (a boundary edge) is halved
 // as well where its middle's foot on its curve lies that near: its triangles become twice as
-// many. With `at_narrow` (per vertex: at a narrow input angle, as bar_shapes has it), a triangle
-// with such a vertex is left alone: it is held to its input angle, not to the bar (fandisk.off
-// adaptive at 2k: halving there took Q at its 19.4° angle from 0.363 to 0.313). A triangle is
-// split once at most. Returns the vertices added.
+// many. With `narrow_at` (per vertex, the narrow input angle there, 0 where none:
+// narrow_angle_at_vertices, as bar_shapes has it), a triangle with such a vertex is left alone: it
+// is held to its input angle, not to the bar (fandisk.off adaptive at 2k: halving there took Q at
+// its 19.4° angle from 0.363 to 0.313). A triangle is split once at most. Returns the vertices
+// added.
 std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& features,
                                  const SurfaceProjector& surface,
                                  ObtuseCorners which = ObtuseCorners::at_boundary,
                                  CurveSplits* along = nullptr,
-                                 const std::vector<bool>* at_narrow = nullptr);
+                                 const std::vector<double>* narrow_at = nullptr);
 
 }  // namespace cvtmesh

@@ -40,9 +40,7 @@ NarrowAngleQuality measure_away_from(const TriangleMesh& mesh, const QualityRepo
     const TriangleShape shape =
         triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
     const double theta = shape.min_angle;
-    double input = 0;
-    for (Index v : t)
-      if (angle_at[v] > 0) input = input == 0 ? angle_at[v] : std::min(input, angle_at[v]);
+    const double input = narrow_angle_at(t, angle_at);
     if (input == 0) {
       away = std::min(away, theta);
       q_away = std::min(q_away, shape.quality);

@@ -3,6 +3,7 @@
 // the output's own last steps.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "cvtmesh/features.hpp"
@@ -14,5 +15,14 @@ namespace cvtmesh {
 // 0 where there is none: a triangle with such a vertex is at that angle.
 std::vector<double> narrow_angle_at_vertices(const TriangleMesh& mesh,
                                              const std::vector<NarrowAngle>& narrow, double radius);
+
+// The narrowest input angle at triangle t's vertices (`angle_at`: narrow_angle_at_vertices), or 0
+// where none of them is at one.
+inline double narrow_angle_at(const Triangle& t, const std::vector<double>& angle_at) {
+  double input = 0;
+  for (const Index v : t)
+    if (angle_at[v] > 0) input = input == 0 ? angle_at[v] : std::min(input, angle_at[v]);
+  return input;
+}
 
 }  // namespace cvtmesh
