@@ -33,10 +33,11 @@ Verdict judged(const BarShapes& a, const BarShapes& b, CompareAway away) {
   return a.worst_all > b.worst_all + kRoundOff ? Verdict::better : Verdict::mixed;
 }
 
-// -1, 0 or 1 as x is less than, equal to or greater than y.
+// -1, 0 or 1 as x is less than y, within `slack` of it or greater (a count exactly; shapes a
+// round-off apart count alike).
 template <typename T>
-int sign_of(T x, T y) {
-  return (x > y) - (x < y);
+int sign_of(T x, T y, T slack = T{0}) {
+  return x > y + slack ? 1 : x < y - slack ? -1 : 0;
 }
 
 // -1, 0 or 1 as the worst shapes `x` away from narrow angles are worse, alike or better than `y`:
@@ -44,12 +45,10 @@ int sign_of(T x, T y) {
 // worse, by the score (mech-holes-shark.off adaptive at 2k: a round that kept the worst θmin,
 // and so the score, took Qmin from 0.514 to 0.435). A round-off apart counts alike.
 int compare_away(const WorstShape& x, const WorstShape& y) {
-  const auto sign = [](double u, double v) {
-    return u > v + kRoundOff ? 1 : u < v - kRoundOff ? -1 : 0;
-  };
-  const int q = sign(x.quality, y.quality), angle = sign(x.angle, y.angle);
+  const int q = sign_of(x.quality, y.quality, kRoundOff);
+  const int angle = sign_of(x.angle, y.angle, kRoundOff);
   if (q * angle >= 0) return q != 0 ? q : angle;
-  return sign(x.score(), y.score());
+  return sign_of(x.score(), y.score(), kRoundOff);
 }
 
 }  // namespace

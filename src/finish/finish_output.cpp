@@ -5,13 +5,13 @@
 #include <optional>
 #include <set>
 #include <span>
-#include <tuple>
 #include <utility>
 
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/repair.hpp"
 #include "features/edge_uses.hpp"
 #include "finish/bar_shapes.hpp"
+#include "finish/best_round.hpp"
 #include "finish/fit_surface.hpp"
 #include "finish/flat_ears.hpp"
 #include "finish/improve_shapes.hpp"
@@ -208,11 +208,8 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   // among smaller cells, where the sizes grade down to a hole, or one just off a feature curve):
   // the edge across from the obtuse angle halved (on its curve, if it is a feature edge), then
   // swept again (all over the mesh the first time, for whatever the first sweeps left, halved or
-  // not). Each round halves what the last one left, and the best round is kept (judge_round): a
-  // round better in one part and worse in another can open the way for the next (lion.off at
-  // 10k: its first round takes the worst away from its 8° tip from 0.55 to 0.40 while bettering
-  // the tip, its next two to 0.62); a round better nowhere ends them (conrod.stl of MeshLab's
-  // samples, non-manifold, at 5k: three such rounds of 0.6 s each, twice).
+  // not). Each round halves what the last one gone on from left; which is kept, and when they
+  // end, best_round says.
   struct Round {
     TriangleMesh mesh;
     std::vector<Edge> features;
@@ -220,9 +217,6 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     ShapeImprovement shapes;
     std::size_t added = 0, removed = 0;
   };
-  Round current{result.mesh, result.feature_edges, supports, shapes};
-  Round best = current;
-  BarShapes best_shapes = bar_shapes(best.mesh, narrow, reach);
   // The halvings of a round from `from`, all or (`held`: narrow_angle_at_vertices) none at a
   // narrow angle.
   const auto halved = [&](const Round& from, const std::vector<double>* held) {
@@ -232,50 +226,42 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                                        ObtuseCorners::under_bar, &along, held);
     return next;
   };
-  for (int round = 0; round < kHalvingRounds; ++round) {
-    // The sweeps after a round's halvings, and its verdict against the best.
-    const auto swept = [&](Round next) {
-      const ShapeImprovement more =
-          improve_shapes(next.mesh, projector, &curves, next.supports, next.features,
-                         settings.shape_sweeps, traced_tips(next.mesh, narrow, reach),
-                         round == 0 ? std::vector<bool>{}
-                                    : around_new_vertices(next.mesh, current.mesh.vertices.size()));
-      next.shapes.flips += more.flips;
-      next.shapes.moves += more.moves;
-      next.shapes.collapses += more.collapses;
-      next.removed += remove_valence_three(next.mesh, removable_in(next.supports), projector);
-      const BarShapes shapes_of_next = bar_shapes(next.mesh, narrow, reach);
-      const Verdict verdict = judge_round(shapes_of_next, best_shapes);
-      return std::tuple{std::move(next), shapes_of_next, verdict};
-    };
-    Round all = halved(current, nullptr);
-    if (all.added == current.added && round > 0) break;
+  // The sweeps after round k's halvings, and the shapes they leave.
+  const auto swept = [&](Round next, const Round& from, int k) {
+    const ShapeImprovement more = improve_shapes(
+        next.mesh, projector, &curves, next.supports, next.features, settings.shape_sweeps,
+        traced_tips(next.mesh, narrow, reach),
+        k == 0 ? std::vector<bool>{} : around_new_vertices(next.mesh, from.mesh.vertices.size()));
+    next.shapes.flips += more.flips;
+    next.shapes.moves += more.moves;
+    next.shapes.collapses += more.collapses;
+    next.removed += remove_valence_three(next.mesh, removable_in(next.supports), projector);
+    const BarShapes after = bar_shapes(next.mesh, narrow, reach);
+    return std::optional(std::pair{std::move(next), after});
+  };
+  std::vector<Triangle> halved_all;  // the current round's halvings, all of them, before sweeps
+  const auto attempt = [&](const Round& from, int k,
+                           bool again) -> std::optional<std::pair<Round, BarShapes>> {
+    if (!again) {
+      Round all = halved(from, nullptr);
+      if (all.added == from.added && k > 0) return std::nullopt;
+      halved_all = all.mesh.triangles;
+      return swept(std::move(all), from, k);
+    }
     // Halvings at a narrow angle, where the bar does not hold, can cost a round what the others
     // gain (lion.off at 5k: 39.2° away from its 8° tip for none, 40.0° without them; fandisk.off
     // adaptive at 2k, 38.8° and 40.2°), and help at the angle elsewhere (mech-holes-shark.off at
-    // 5k: Q 0.41 -> 0.52 there): the round again without them where it is better nowhere with them.
-    std::optional<Round> held;
-    if (!narrow.empty()) {
-      const std::vector<double> narrow_at = narrow_angle_at_vertices(current.mesh, narrow, reach);
-      held = halved(current, &narrow_at);
-      if (held->mesh.triangles == all.mesh.triangles) held.reset();
-    }
-    auto [next, next_shapes, verdict] = swept(std::move(all));
-    if (verdict == Verdict::no_better && held) {
-      auto [other, other_shapes, other_verdict] = swept(std::move(*held));
-      if (other_verdict < verdict) {
-        next = std::move(other);
-        next_shapes = other_shapes;
-        verdict = other_verdict;
-      }
-    }
-    if (verdict == Verdict::no_better) break;
-    current = std::move(next);
-    if (verdict == Verdict::better) {
-      best = current;
-      best_shapes = next_shapes;
-    }
-  }
+    // 5k: Q 0.41 -> 0.52 there): the round again without them where it is better nowhere with
+    // them.
+    if (narrow.empty()) return std::nullopt;
+    const std::vector<double> narrow_at = narrow_angle_at_vertices(from.mesh, narrow, reach);
+    Round held = halved(from, &narrow_at);
+    if (held.mesh.triangles == halved_all) return std::nullopt;
+    return swept(std::move(held), from, k);
+  };
+  Round start{result.mesh, result.feature_edges, supports, shapes};
+  BarShapes start_shapes = bar_shapes(start.mesh, narrow, reach);
+  Round best = best_round(std::move(start), start_shapes, kHalvingRounds, attempt, judge_round);
   result.mesh = std::move(best.mesh);
   result.feature_edges = std::move(best.features);
   supports = std::move(best.supports);
