@@ -556,6 +556,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "shape_flips",
                           "shape_moves",
                           "short_edges_collapsed",
+                          "vertices_snapped",
                           "vertices_fitted",
                           "angle_min_away_deg",
                           "q_min_away",

@@ -70,8 +70,9 @@ struct RemeshSettings {
   // Sweeps of edge flips and vertex moves around the output's badly shaped triangles, the last
   // step (see RemeshResult::shape_flips); 0 turns it off.
   int shape_sweeps = 5;
-  // Rounds of fitting the output to the input, last (see RemeshResult::vertices_fitted); 0 keeps
-  // every vertex on the input surface.
+  // Rounds of fitting the output to the input, last, after the vertices beside the input's
+  // untraced creases move onto them (see RemeshResult::vertices_snapped and vertices_fitted); 0
+  // does neither and keeps every vertex on the input surface where the sweeps left it.
   int fit_rounds = 1;
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
@@ -203,6 +204,9 @@ struct RemeshResult {
   // vertex, or a curve vertex along its curve, merged into its neighbour (V - 1, E - 3, F - 2:
   // the topology stays); at most 1% of the vertices.
   std::size_t short_edges_collapsed = 0;
+  // Surface vertices moved onto an input crease that the output does not trace as a feature,
+  // before the fit (finish/snap_to_creases): a low-poly input remeshed finer keeps its edges.
+  std::size_t vertices_snapped = 0;
   // Surface vertices moved off the input along their normals, last of all, so that the input lies
   // between them and their triangles' middles (finish/fit_surface): the chords of a curved
   // surface all fall inside convex parts otherwise. Never where θmin or Qmin would fall.

@@ -15,6 +15,7 @@
 #include "finish/fit_surface.hpp"
 #include "finish/flat_ears.hpp"
 #include "finish/improve_shapes.hpp"
+#include "finish/snap_to_creases.hpp"
 #include "finish/split_obtuse_corners.hpp"
 #include "finish/valence_three.hpp"
 #include "geometry/angle.hpp"
@@ -142,8 +143,8 @@ void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    std::size_t optimized_seeds, const SeedConstraints& constraints,
                    const Features& features, const CurveProjector& curves,
-                   const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
-                   const RemeshSettings& settings) {
+                   const TriangleMesh& surface, const SurfaceProjector& projector,
+                   const std::vector<NarrowAngle>& narrow, const RemeshSettings& settings) {
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
   std::vector<bool> corners(result.mesh.vertices.size(), false), seedless(corners.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;
@@ -274,6 +275,8 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   std::vector<bool> removable = removable_in(supports);
   if (result.valence_three_removed + shapes.collapses > 0) drop_unused_vertices(result, removable);
   // Surface vertices only: a feature or corner vertex stays on its curve.
+  if (settings.fit_rounds > 0)
+    result.vertices_snapped = snap_to_creases(result.mesh, surface, features, projector, removable);
   const SurfaceFit fit =
       fit_to_surface(result.mesh, projector, std::move(removable), settings.fit_rounds);
   result.vertices_fitted = fit.vertices_moved;

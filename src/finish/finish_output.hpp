@@ -3,7 +3,8 @@
 // vertices that topology control added and the feature links traced (matched to the seeds by
 // position, so before anything moves them), the last flips, moves and collapses around badly
 // shaped triangles (improve_shapes; obtuse boundary corners split first where that ends better),
-// vertices of three triangles, and the fit to the input.
+// vertices of three triangles, the vertices beside untraced input creases moved onto them
+// (snap_to_creases), and the fit to the input.
 #pragma once
 
 #include <vector>
@@ -19,11 +20,12 @@ class SurfaceProjector;
 // vertices the seeds, by id); `seeds`: all the seeds, those topology control added from
 // `optimized_seeds` on. Fills `result`'s counts of what each step did, its feature edges, and the
 // vertices added. `narrow`: the input's angles under 30° between features; the triangles at those
-// the output traces are held to them in the last sweeps (improve_shapes).
+// the output traces are held to them in the last sweeps (improve_shapes). `surface`: the input
+// that `projector` projects onto, in the ids of `features`.
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    std::size_t optimized_seeds, const SeedConstraints& constraints,
                    const Features& features, const CurveProjector& curves,
-                   const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
-                   const RemeshSettings& settings);
+                   const TriangleMesh& surface, const SurfaceProjector& projector,
+                   const std::vector<NarrowAngle>& narrow, const RemeshSettings& settings);
 
 }  // namespace cvtmesh

@@ -326,6 +326,8 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.shape_flips += part.shape_flips;
   all.shape_moves += part.shape_moves;
   all.short_edges_collapsed += part.short_edges_collapsed;
+  all.vertices_snapped += part.vertices_snapped;
+  all.vertices_fitted += part.vertices_fitted;
   const Features features = renumbered(part.features, component.input_vertex);
   all.features.edges.insert(all.features.edges.end(), features.edges.begin(), features.edges.end());
   all.features.corners.insert(all.features.corners.end(), features.corners.begin(),

@@ -306,7 +306,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.holes_closed = last.closed.holes;
   result.triangles_closing_holes = last.closed.triangles;
   result.vertices_closing_holes = last.closed.vertices;
-  finish_output(result, seeds, optimized_seeds, constraints, features, *curves, *projector,
+  finish_output(result, seeds, optimized_seeds, constraints, features, *curves, mesh, *projector,
                 narrow_feature_angles(mesh, features, kNarrowAngleDeg), settings);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
