@@ -106,22 +106,30 @@ TEST(SnapToCreases, LeavesATracedRidgeAPinnedAndAFarVertexAlone) {
   EXPECT_EQ(far.vertices, far_before.vertices);
 }
 
-// A shell of thickness t under the tent, its inner side turned inwards: the fan's centre, 2t
-// beside the outer ridge, is nearer the inner one, through the shell. It stays: that ridge faces
-// away from the side the fan lies on.
+// Under the tent's ridge, t below it, a strip of the inner side of a shell, turned inwards (the
+// check holds back 1-4 vertices on 15 of the 171 rows of the shared meshes at 1k-10k, cow, bones
+// and man among them): the fan's centre, 2t beside the outer ridge and a little under the outer
+// face (nearer it than the strip), is nearer the strip's ridge, through the shell, and a move there
+// would bring its triangles nearer the input (measured without the check). It stays: that ridge
+// faces away from the side the centre lies on.
 TEST(SnapToCreases, LeavesTheRidgeOfAThinShellsOtherSideAlone) {
-  constexpr double offset = 0.1, t = 0.5 * offset * 0.2;  // the fan's radius is 0.2
+  constexpr double offset = 0.1, t = 0.5 * offset * 0.2, w = 2 * t;  // the fan's radius is 0.2
   TriangleMesh shell = coarse_tent();
-  TriangleMesh inner = coarse_tent();
-  for (Vec3& v : inner.vertices) v.z -= t;
-  for (Triangle& f : inner.triangles) {
+  const auto n = static_cast<Index>(shell.vertices.size());
+  shell.vertices.insert(shell.vertices.end(), {{0, -w, tent(-w) - t},
+                                               {1, -w, tent(-w) - t},
+                                               {0, 0, -t},
+                                               {1, 0, -t},
+                                               {0, w, tent(w) - t},
+                                               {1, w, tent(w) - t}});
+  for (Triangle f : coarse_tent().triangles) {
     std::swap(f[1], f[2]);
-    for (Index& v : f) v += static_cast<Index>(shell.vertices.size());
+    for (Index& v : f) v += n;
+    shell.triangles.push_back(f);
   }
-  shell.vertices.insert(shell.vertices.end(), inner.vertices.begin(), inner.vertices.end());
-  shell.triangles.insert(shell.triangles.end(), inner.triangles.begin(), inner.triangles.end());
   const SurfaceProjector projector(shell);
   TriangleMesh output = fan_on_tent(offset);
+  output.vertices[0].z = -1.25 * t;  // the outer face is at -t there, the strip at -2t
   const TriangleMesh before = output;
   EXPECT_EQ(snap_to_creases(output, shell, {}, projector, all(output)), 0u);
   EXPECT_EQ(output.vertices, before.vertices);

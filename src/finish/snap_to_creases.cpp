@@ -12,6 +12,7 @@
 
 #include "features/edge_uses.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/unit_vector.hpp"
 #include "quality/min_shape.hpp"
 
 namespace cvtmesh {
@@ -37,9 +38,7 @@ constexpr double kAngleAim = 40, kQualityAim = 0.7;
 constexpr double kMinTurnCos = 0.906;  // 25°
 
 Vec3 unit_normal_of(const TriangleMesh& m, const Triangle& t) {
-  const Vec3 n = cross(m.vertices[t[1]] - m.vertices[t[0]], m.vertices[t[2]] - m.vertices[t[0]]);
-  const double length = norm(n);
-  return length > 0 ? (1 / length) * n : Vec3{0, 0, 0};
+  return unit_normal(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
 }
 
 using Kernel = CGAL::Simple_cartesian<double>;
@@ -82,8 +81,8 @@ Creases creases_of(const TriangleMesh& surface, const Features& features, double
   return creases;
 }
 
-// A star's triangles: their worst shape, their normals, and their distance to the surface (at
-// centroids and edge midpoints, weighted by area).
+// A star's triangles: their worst shape, their normals, and their distance to the surface at
+// centroids and edge midpoints: summed, weighted by area, and the farthest.
 struct StarState {
   double min_angle = 180, min_quality = 1, distance = 0, farthest = 0;
   std::vector<Vec3> normals;

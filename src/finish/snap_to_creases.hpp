@@ -22,12 +22,14 @@ class SurfaceProjector;
 // Moves each vertex of `output` flagged in `movable` that lies near an edge of `surface` whose
 // triangles' normals turn by more than 20° and that is at least as long as the output's mean edge
 // (a crease; `features`, which the output traces, are none), within 0.3 of the vertex's shortest
-// edge, to the nearest point of the nearest such edge (a CGAL AABB tree's), where that
-// brings its triangles nearer the surface (at their centroids and edge midpoints, weighted by
-// area) and keeps each of them at least as well shaped as the worst of them was, or at θmin 40°
-// and Q 0.7 (what the last sweeps aim at), and turned by less than 25°. Vertices on an edge with
-// other than two triangles never move; nor does the connectivity. One pass over the vertices in
-// order: deterministic. Returns the vertices moved.
+// edge, to the nearest point of the nearest such edge (a CGAL AABB tree's), where that brings its
+// triangles nearer the surface (at their centroids and edge midpoints, weighted by area) with
+// none of those points farther than the farthest was, keeps each triangle at least as well shaped
+// as the worst of them was, or at θmin 40° and Q 0.7 (what the last sweeps aim at), turns none by
+// 25° or more, and the crease's triangles face the side the vertex lies on (not the other side of
+// a part thinner than the reach). Vertices on an edge with other than two triangles never move; nor
+// does the connectivity. One pass over the vertices in order: deterministic. Returns the vertices
+// moved.
 std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
                             const Features& features, const SurfaceProjector& projector,
                             const std::vector<bool>& movable);
