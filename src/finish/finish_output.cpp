@@ -246,7 +246,7 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     if (!again) {
       Round all = halved(from, nullptr);
       if (all.added == from.added && k > 0) return std::nullopt;
-      halved_all = all.mesh.triangles;
+      if (!narrow.empty()) halved_all = all.mesh.triangles;  // for the retry below
       return swept(std::move(all), from, k);
     }
     // Halvings at a narrow angle, where the bar does not hold, can cost a round what the others
