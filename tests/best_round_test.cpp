@@ -30,14 +30,18 @@ struct Script {
   }
 };
 
-const auto kJudge = [](Verdict v, Verdict) { return v; };
+// The round best_round keeps, from round 0 (as bad as can be), in at most `rounds` rounds.
+int best_of(Script& s, int rounds) {
+  return best_round(0, Verdict::no_better, rounds, s.attempt(),
+                    [](Verdict v, Verdict) { return v; });
+}
 
 TEST(BestRound, KeepsTheBestRoundNotTheLast) {
   Script s;
   s.verdicts = {{{0, 0, false}, Verdict::better},
                 {{1, 1, false}, Verdict::mixed},
                 {{11, 2, false}, Verdict::mixed}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 3, s.attempt(), kJudge), 1);
+  EXPECT_EQ(best_of(s, 3), 1);
   // The mixed rounds were gone on from: round 2 from round 1's result.
   EXPECT_EQ(s.made.back(), std::tuple(11, 2, false));
 }
@@ -45,7 +49,7 @@ TEST(BestRound, KeepsTheBestRoundNotTheLast) {
 TEST(BestRound, GoesOnFromAMixedRoundAndKeepsWhatIsBetterAfterIt) {
   Script s;
   s.verdicts = {{{0, 0, false}, Verdict::mixed}, {{1, 1, false}, Verdict::better}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 3, s.attempt(), kJudge), 11);
+  EXPECT_EQ(best_of(s, 3), 11);
 }
 
 TEST(BestRound, ARoundBetterNowhereIsTriedAgainAnotherWay) {
@@ -53,7 +57,7 @@ TEST(BestRound, ARoundBetterNowhereIsTriedAgainAnotherWay) {
   s.verdicts = {{{0, 0, false}, Verdict::no_better},
                 {{0, 0, true}, Verdict::better},
                 {{2, 1, false}, Verdict::better}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 2, s.attempt(), kJudge), 21);
+  EXPECT_EQ(best_of(s, 2), 21);
   EXPECT_EQ(s.made,
             (std::vector<std::tuple<int, int, bool>>{{0, 0, false}, {0, 0, true}, {2, 1, false}}));
 }
@@ -64,7 +68,7 @@ TEST(BestRound, ARoundBetterNowhereEitherWayEndsTheRounds) {
                 {{1, 1, false}, Verdict::no_better},
                 {{1, 1, true}, Verdict::no_better},
                 {{1, 2, false}, Verdict::better}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 3, s.attempt(), kJudge), 1);
+  EXPECT_EQ(best_of(s, 3), 1);
   EXPECT_EQ(s.made.size(), 3u);  // round 2 never tried
 }
 
@@ -72,22 +76,22 @@ TEST(BestRound, TheOtherWayIsTakenOnlyWhereItIsBetter) {
   Script s;
   // Better nowhere, and the other way has nothing to do: the rounds end.
   s.verdicts = {{{0, 0, false}, Verdict::no_better}, {{0, 0, true}, std::nullopt}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 3, s.attempt(), kJudge), 0);
+  EXPECT_EQ(best_of(s, 3), 0);
   // Mixed rounds are not tried again.
   Script t;
   t.verdicts = {{{0, 0, false}, Verdict::mixed}, {{1, 1, false}, std::nullopt}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 3, t.attempt(), kJudge), 0);
+  EXPECT_EQ(best_of(t, 3), 0);
   EXPECT_EQ(t.made, (std::vector<std::tuple<int, int, bool>>{{0, 0, false}, {1, 1, false}}));
 }
 
 TEST(BestRound, EndsWhereARoundHasNothingToDoAndAtTheCap) {
   Script s;
   s.verdicts = {{{0, 0, false}, Verdict::better}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 3, s.attempt(), kJudge), 1);
+  EXPECT_EQ(best_of(s, 3), 1);
   EXPECT_EQ(s.made.size(), 2u);  // round 1 had nothing to do
   Script t;
   t.verdicts = {{{0, 0, false}, Verdict::better}, {{1, 1, false}, Verdict::better}};
-  EXPECT_EQ(best_round(0, Verdict::no_better, 1, t.attempt(), kJudge), 1);
+  EXPECT_EQ(best_of(t, 1), 1);
   EXPECT_EQ(t.made.size(), 1u);
 }
 

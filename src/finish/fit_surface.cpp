@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 #include "features/edge_uses.hpp"
+#include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
 #include "quality/min_shape.hpp"
 
@@ -160,13 +160,7 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
     angle_floor = std::min(angle_floor, s.min_angle);
     q_floor = std::min(q_floor, s.quality);
   }
-  std::vector<double> shortest(nv, std::numeric_limits<double>::infinity());
-  for (const Triangle& f : mesh.triangles)
-    for (int i = 0; i < 3; ++i) {
-      const double l = distance(mesh.vertices[f[i]], mesh.vertices[f[(i + 1) % 3]]);
-      shortest[f[i]] = std::min(shortest[f[i]], l);
-      shortest[f[(i + 1) % 3]] = std::min(shortest[f[(i + 1) % 3]], l);
-    }
+  const std::vector<double> shortest = shortest_edges(mesh);
   const std::vector<Vec3> start = mesh.vertices;
   for (int round = 0; round < rounds; ++round) {
     const std::vector<Vec3> normal = vertex_normals(mesh);
