@@ -10,6 +10,10 @@
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
 //     rounds (finish/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
+//   BM_SnapToCreases/T: an icosphere of level 5 (10,242 vertices) projected onto an icosahedron,
+//     its vertices beside the icosahedron's edges moved onto them (finish/snap_to_creases) on T
+//     threads; counters snap_s, projections_s (every vertex once, one thread),
+//     snap_over_projections and moved (the same for any T).
 //   BM_ProjectMoved/M/C: 20k points on a torus of 40k triangles (C = 0) or 384 (C = 1, each
 //     triangle some 50 points wide), each moved at random by up to M% of the points' spacing,
 //     projected again from their feet before (as CCVT projects its seeds every evaluation,
@@ -23,16 +27,19 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
+#include <tbb/global_control.h>
 
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "finish/fit_surface.hpp"
 #include "finish/improve_shapes.hpp"
+#include "finish/snap_to_creases.hpp"
 #include "geometry/surface_projector.hpp"
 #include "support/shapes.hpp"
 
@@ -53,6 +60,23 @@ double seconds_to_project(const SurfaceProjector& surface, const std::vector<Vec
   return seconds_since(start);
 }
 
+// Sets the iteration's time to a step's `seconds`, with counters NAME_s, projections_s (each of
+// `points` projected onto `surface` once) and NAME_over_projections.
+void time_against_projections(benchmark::State& state, const std::string& name, double seconds,
+                              const SurfaceProjector& surface, const std::vector<Vec3>& points) {
+  const double projections_s = seconds_to_project(surface, points);
+  state.SetIterationTime(seconds);
+  state.counters[name + "_s"] = seconds;
+  state.counters["projections_s"] = projections_s;
+  state.counters[name + "_over_projections"] = seconds / projections_s;
+}
+
+// `mesh` with each vertex moved to its nearest point of `surface`.
+TriangleMesh on_surface(TriangleMesh mesh, const SurfaceProjector& surface) {
+  for (Vec3& v : mesh.vertices) v = surface.nearest(v).point;
+  return mesh;
+}
+
 void BM_ImproveShapes(benchmark::State& state) {
   const TriangleMesh fine = testing::icosphere(6);
   const SurfaceProjector surface(fine);
@@ -64,13 +88,8 @@ void BM_ImproveShapes(benchmark::State& state) {
     std::vector<Edge> no_features;
     const auto shapes_start = std::chrono::steady_clock::now();
     const ShapeImprovement done = improve_shapes(mesh, surface, nullptr, {}, no_features, 5);
-    const double shapes_s = seconds_since(shapes_start);
-    const double projections_s = seconds_to_project(surface, start.vertices);
-    state.SetIterationTime(shapes_s);
+    time_against_projections(state, "shapes", seconds_since(shapes_start), surface, start.vertices);
     const QualityReport after = measure_quality(mesh);
-    state.counters["shapes_s"] = shapes_s;
-    state.counters["projections_s"] = projections_s;
-    state.counters["shapes_over_projections"] = shapes_s / projections_s;
     state.counters["flips"] = static_cast<double>(done.flips);
     state.counters["moves"] = static_cast<double>(done.moves);
     state.counters["collapses"] = static_cast<double>(done.collapses);
@@ -85,25 +104,36 @@ BENCHMARK(BM_ImproveShapes)->Arg(1)->Arg(2)->Arg(3)->UseManualTime()->Unit(bench
 void BM_FitSurface(benchmark::State& state) {
   const TriangleMesh fine = testing::icosphere(6);
   const SurfaceProjector surface(fine);
-  TriangleMesh start = testing::icosphere(4);
-  for (Vec3& v : start.vertices) v = surface.nearest(v).point;
+  const TriangleMesh start = on_surface(testing::icosphere(4), surface);
   const std::vector<bool> movable(start.vertices.size(), true);
   const double mean_before = hausdorff_distance(start, fine).mean;
   for (auto _ : state) {
     TriangleMesh mesh = start;
     const auto fit_start = std::chrono::steady_clock::now();
     fit_to_surface(mesh, surface, movable, static_cast<int>(state.range(0)));
-    const double fit_s = seconds_since(fit_start);
-    const double projections_s = seconds_to_project(surface, start.vertices);
-    state.SetIterationTime(fit_s);
-    state.counters["fit_s"] = fit_s;
-    state.counters["projections_s"] = projections_s;
-    state.counters["fit_over_projections"] = fit_s / projections_s;
+    time_against_projections(state, "fit", seconds_since(fit_start), surface, start.vertices);
     state.counters["hd_mean_before_pct"] = 100 * mean_before;
     state.counters["hd_mean_after_pct"] = 100 * hausdorff_distance(mesh, fine).mean;
   }
 }
 BENCHMARK(BM_FitSurface)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_SnapToCreases(benchmark::State& state) {
+  const TriangleMesh icosahedron = testing::icosphere(0);
+  const SurfaceProjector surface(icosahedron);
+  const TriangleMesh start = on_surface(testing::icosphere(5), surface);
+  const std::vector<bool> movable(start.vertices.size(), true);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    TriangleMesh mesh = start;
+    const auto snap_start = std::chrono::steady_clock::now();
+    const std::size_t moved = snap_to_creases(mesh, icosahedron, {}, surface, movable);
+    time_against_projections(state, "snap", seconds_since(snap_start), surface, start.vertices);
+    state.counters["moved"] = static_cast<double>(moved);
+  }
+}
+BENCHMARK(BM_SnapToCreases)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 // CGAL's own search for the nearest point, with the same hint: the baseline of BM_ProjectMoved.
 class CgalNearest {

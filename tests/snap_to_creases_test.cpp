@@ -3,6 +3,7 @@
 // lies on the faces again; a traced ridge, the ridge of a thin shell's other side, a pinned or a
 // far vertex, and a flat input stay as they are.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +13,12 @@
 #include "cvtmesh/quality.hpp"
 #include "finish/snap_to_creases.hpp"
 #include "geometry/surface_projector.hpp"
+#include "support/shapes.hpp"
 
 namespace cvtmesh {
 namespace {
+
+using testing::mapped_grid;
 
 constexpr double kSlope = 0.5;  // the faces turn by 53° at the ridge
 
@@ -133,6 +137,42 @@ TEST(SnapToCreases, LeavesTheRidgeOfAThinShellsOtherSideAlone) {
   const TriangleMesh before = output;
   EXPECT_EQ(snap_to_creases(output, shell, {}, projector, all(output)), 0u);
   EXPECT_EQ(output.vertices, before.vertices);
+}
+
+// A grid over the tent, one row of it a little beside the ridge: that row's vertices, neighbours
+// in a row, all move onto the ridge (judged in rounds of vertices no two of which are
+// neighbours), and the outcome is the same on one thread as on all.
+TEST(SnapToCreases, ARowOfNeighboursBesideARidgeAllMoveTheSameOnAnyThreadCount) {
+  const TriangleMesh input = coarse_tent();
+  const SurfaceProjector projector(input);
+  const TriangleMesh grid = mapped_grid(10, 20, [](double u, double v) {
+    const double y = -1 + 2 * v + 0.001;  // rows 0.1 apart, one 0.001 from the ridge
+    return Vec3{u, y, tent(y)};
+  });
+  TriangleMesh one = grid;
+  std::size_t moved_one = 0;
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    moved_one = snap_to_creases(one, input, {}, projector, all(one));
+  }
+  TriangleMesh every = grid;
+  const std::size_t moved = snap_to_creases(every, input, {}, projector, all(every));
+  EXPECT_EQ(moved, moved_one);
+  EXPECT_EQ(every.vertices, one.vertices);
+  std::size_t beside = 0;
+  for (Index v = 0; v < grid.vertices.size(); ++v) {
+    if (std::abs(grid.vertices[v].y - 0.001) > 1e-9) {
+      EXPECT_EQ(every.vertices[v], grid.vertices[v]);
+      continue;
+    }
+    ++beside;
+    // The row's ends, on the input's boundary, stay (their triangles' midpoints would leave it).
+    if (grid.vertices[v].x > 0 && grid.vertices[v].x < 1) {
+      EXPECT_NEAR(every.vertices[v].y, 0, 1e-12);
+    }
+  }
+  EXPECT_EQ(beside, 11u);
+  EXPECT_GE(moved, 9u);
 }
 
 TEST(SnapToCreases, LeavesAFlatInputAlone) {

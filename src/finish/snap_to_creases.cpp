@@ -4,10 +4,12 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Simple_cartesian.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "features/edge_uses.hpp"
 #include "geometry/shortest_edges.hpp"
@@ -91,6 +93,31 @@ struct StarState {
   std::vector<Vec3> normals;
 };
 
+// The vertices with a value in `flagged`, in rounds no two members of which share an edge
+// (triangles `star` per vertex): each takes the first round none of its earlier neighbours is in.
+template <class T>
+std::vector<std::vector<Index>> independent_rounds(
+    const TriangleMesh& mesh, const std::vector<std::vector<std::size_t>>& star,
+    const std::vector<std::optional<T>>& flagged) {
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> round_of(flagged.size(), kNone);
+  std::vector<std::vector<Index>> rounds;
+  std::vector<bool> taken;  // per round: a neighbour is in it
+  for (Index v = 0; v < flagged.size(); ++v) {
+    if (!flagged[v]) continue;
+    taken.assign(rounds.size(), false);
+    for (const std::size_t t : star[v])
+      for (const Index u : mesh.triangles[t])
+        if (u != v && round_of[u] != kNone) taken[round_of[u]] = true;
+    const std::size_t r =
+        static_cast<std::size_t>(std::find(taken.begin(), taken.end(), false) - taken.begin());
+    if (r == rounds.size()) rounds.emplace_back();
+    rounds[r].push_back(v);
+    round_of[v] = r;
+  }
+  return rounds;
+}
+
 }  // namespace
 
 std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
@@ -100,6 +127,7 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
       creases_of(surface, features, kMinCreaseLength * mean_edge_length(output));
   if (creases.segments.empty()) return 0;
   CreaseTree tree(creases.segments.begin(), creases.segments.end());
+  tree.build();  // before the queries, which run in parallel
   tree.accelerate_distance_queries();
   const std::size_t nv = output.vertices.size();
   std::vector<std::vector<std::size_t>> star(nv);
@@ -112,17 +140,20 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
     if (j - i != 2) fixed[uses[i].edge[0]] = fixed[uses[i].edge[1]] = true;
   });
 
-  const auto state_of = [&](std::size_t v, const SurfaceProjector::Foot& hint) {
+  // The star of v with v at x (the mesh itself is only read, so stars are judged in parallel).
+  const auto state_of = [&](std::size_t v, const Vec3& x, const SurfaceProjector::Foot& hint) {
     StarState s;
     const auto to_surface = [&](const Vec3& p) {
       return distance(p, projector.nearest(p, hint).point);
     };
+    const auto at = [&](Index u) -> const Vec3& { return u == v ? x : output.vertices[u]; };
     for (const std::size_t t : star[v]) {
-      const auto [a, b, c] = output.corners(t);
+      const Triangle& f = output.triangles[t];
+      const Vec3 &a = at(f[0]), &b = at(f[1]), &c = at(f[2]);
       const MinShape shape = min_shape(a, b, c);
       s.min_angle = std::min(s.min_angle, shape.min_angle);
       s.min_quality = std::min(s.min_quality, shape.quality);
-      s.normals.push_back(unit_normal_of(output, output.triangles[t]));
+      s.normals.push_back(unit_normal(a, b, c));
       const double area = 0.5 * norm(cross(b - a, c - a));
       double sum = 0;
       for (const Vec3& p : {(1.0 / 3) * (a + b + c), 0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)}) {
@@ -135,33 +166,52 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
     return s;
   };
 
-  // One pass in vertex order (a second, after the neighbours moved, took hand.off's Hausdorff
-  // mean at 5k from 0.02315% to 0.02311%, for a quarter more time).
-  std::size_t moved = 0;
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (v >= movable.size() || !movable[v] || fixed[v] || star[v].empty()) continue;
-    Vec3& x = output.vertices[v];
+  // Each vertex's target (the nearest crease point within reach, the crease facing its side)
+  // depends on its own position only: all found at once.
+  struct Target {
+    Vec3 to;
+    SurfaceProjector::Foot foot;
+  };
+  std::vector<std::optional<Target>> target(nv);
+  tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
+    if (v >= movable.size() || !movable[v] || fixed[v] || star[v].empty()) return;
+    const Vec3& x = output.vertices[v];
     const auto [q, crease] = tree.closest_point_and_primitive(point(x));
     const Vec3 to{q.x(), q.y(), q.z()};
-    if (!(distance(to, x) < kReach * shortest[v]) || to == x) continue;
+    if (!(distance(to, x) < kReach * shortest[v]) || to == x) return;
     // A crease of the part's other side, where it is thinner than the reach, faces away.
     const SurfaceProjector::Foot foot = projector.nearest(x);
     const auto& faces =
         creases.normals[static_cast<std::size_t>(crease - creases.segments.begin())];
-    if (dot(faces[0], foot.normal) <= 0 && dot(faces[1], foot.normal) <= 0) continue;
-    const StarState before = state_of(v, foot);
-    const Vec3 from = x;
-    x = to;
-    const StarState after = state_of(v, foot);
-    bool keep = after.distance < before.distance && after.farthest <= before.farthest &&
+    if (dot(faces[0], foot.normal) <= 0 && dot(faces[1], foot.normal) <= 0) return;
+    target[v] = Target{to, foot};
+  });
+  // One pass, in rounds of vertices no two of which are neighbours (a greedy colouring in vertex
+  // order): a move is judged on its star alone, which no other move of its round changes, so a
+  // round's moves are judged at once, and the outcome depends neither on the thread count nor on
+  // the order within a round. (A second pass, after the neighbours moved, took hand.off's
+  // Hausdorff mean at 5k from 0.02315% to 0.02311%, for a quarter more time.)
+  const std::vector<std::vector<Index>> rounds = independent_rounds(output, star, target);
+  std::size_t moved = 0;
+  for (const std::vector<Index>& round : rounds) {
+    std::vector<char> keep(round.size(), 0);
+    tbb::parallel_for(std::size_t{0}, round.size(), [&](std::size_t k) {
+      const Index v = round[k];
+      const Target& t = *target[v];
+      const StarState before = state_of(v, output.vertices[v], t.foot);
+      const StarState after = state_of(v, t.to, t.foot);
+      bool ok = after.distance < before.distance && after.farthest <= before.farthest &&
                 after.min_angle >= std::min(before.min_angle, kAngleAim) &&
                 after.min_quality >= std::min(before.min_quality, kQualityAim);
-    for (std::size_t k = 0; keep && k < star[v].size(); ++k)
-      keep = dot(after.normals[k], before.normals[k]) >= kMinTurnCos;
-    if (keep)
+      for (std::size_t i = 0; ok && i < star[v].size(); ++i)
+        ok = dot(after.normals[i], before.normals[i]) >= kMinTurnCos;
+      keep[k] = ok;
+    });
+    for (std::size_t k = 0; k < round.size(); ++k) {
+      if (!keep[k]) continue;
+      output.vertices[round[k]] = target[round[k]]->to;
       ++moved;
-    else
-      x = from;
+    }
   }
   return moved;
 }

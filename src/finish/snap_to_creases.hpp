@@ -28,8 +28,9 @@ class SurfaceProjector;
 // as the worst of them was, or at θmin 40° and Q 0.7 (what the last sweeps aim at), turns none by
 // 25° or more, and the crease's triangles face the side the vertex lies on (not the other side of
 // a part thinner than the reach). Vertices on an edge with other than two triangles never move; nor
-// does the connectivity. One pass over the vertices in order: deterministic. Returns the vertices
-// moved.
+// does the connectivity. One pass over the vertices, in rounds of vertices no two of which are
+// neighbours, each round's moves judged at once: deterministic on any thread count. Returns the
+// vertices moved.
 std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
                             const Features& features, const SurfaceProjector& projector,
                             const std::vector<bool>& movable);
