@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "features/edge_uses.hpp"
+#include "finish/move_limits.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
 #include "quality/min_shape.hpp"
@@ -22,8 +23,6 @@ namespace {
 constexpr double kMaxMove = 0.1;
 // How far the surface is looked for along a sample's normal, in the vertex's shortest edges.
 constexpr double kRayReach = 0.25;
-// A triangle may turn this far at most (cosine): a fit shifts, it does not fold.
-constexpr double kMinTurnCos = 0.906;  // 25°
 
 // The points of a triangle whose distances the fit weighs: its corners, edge midpoints and
 // centroid, with the weights of the 7-point rule exact for quadratics (1/20, 2/15 and 9/20 of the
@@ -133,14 +132,14 @@ std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
   return offset;
 }
 
-// Whether triangle t, as it is now, stays above the floors and turned less than kMinTurnCos
+// Whether triangle t, as it is now, stays above the floors and turned less than kMaxShiftTurnCos
 // from `before` (its unit normal before the round).
 bool acceptable(const TriangleMesh& mesh, std::size_t t, const Vec3& before, double angle_floor,
                 double q_floor) {
   const auto [a, b, c] = mesh.corners(t);
   const MinShape s = min_shape(a, b, c);
   return s.min_angle >= angle_floor && s.quality >= q_floor &&
-         dot(unit(cross(b - a, c - a)), before) >= kMinTurnCos;
+         dot(unit(cross(b - a, c - a)), before) >= kMaxShiftTurnCos;
 }
 
 }  // namespace

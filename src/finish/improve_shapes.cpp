@@ -13,6 +13,7 @@
 
 #include "features/curve_projector.hpp"
 #include "features/edge_uses.hpp"
+#include "finish/move_limits.hpp"
 #include "finish/surface_gap.hpp"
 #include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
@@ -27,10 +28,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-// A little above what a converged CVT gives on a smooth surface (θmin about 35-38°, Q about
-// 0.65): below it, a triangle is worth improving; changes stop where they no longer help.
-constexpr double kMinAngleDeg = 40;
-constexpr double kMinQuality = 0.7;
 // An edge is flipped only where the two triangles' normals and the new two's are within 40° of
 // the pair's: across a sharper fold, the new diagonal would leave the surface (the gap test below
 // checks that it does not). 40° rather than 20°: on a curved part of the surface a chord and the
@@ -93,7 +90,7 @@ constexpr double kNotMeasured = -1;
 
 bool badly_shaped(const Vec3& a, const Vec3& b, const Vec3& c) {
   const MinShape s = min_shape(a, b, c);
-  return s.min_angle < kMinAngleDeg || s.quality < kMinQuality;
+  return s.min_angle < kAimAngleDeg || s.quality < kAimQuality;
 }
 
 // Whether a unit_or_zero vector has no direction.

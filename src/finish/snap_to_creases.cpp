@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "features/edge_uses.hpp"
+#include "finish/move_limits.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/unit_vector.hpp"
@@ -33,11 +34,6 @@ constexpr double kMinCreaseLength = 1;
 // How far a vertex looks for a crease, in its shortest edges: a crease that passes through its
 // star, not one its neighbour is nearer.
 constexpr double kReach = 0.3;
-// What the last sweeps aim at (improve_shapes): a move may take a triangle down to these, or to
-// the worst of its star before, whichever is lower.
-constexpr double kAngleAim = 40, kQualityAim = 0.7;
-// A triangle may turn this far at most (cosine), as in the fit: a snap shifts, it does not fold.
-constexpr double kMinTurnCos = 0.906;  // 25°
 
 Vec3 unit_normal_of(const TriangleMesh& m, const Triangle& t) {
   return unit_normal(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
@@ -201,10 +197,10 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
       const StarState before = state_of(v, output.vertices[v], t.foot);
       const StarState after = state_of(v, t.to, t.foot);
       bool ok = after.distance < before.distance && after.farthest <= before.farthest &&
-                after.min_angle >= std::min(before.min_angle, kAngleAim) &&
-                after.min_quality >= std::min(before.min_quality, kQualityAim);
+                after.min_angle >= std::min(before.min_angle, kAimAngleDeg) &&
+                after.min_quality >= std::min(before.min_quality, kAimQuality);
       for (std::size_t i = 0; ok && i < star[v].size(); ++i)
-        ok = dot(after.normals[i], before.normals[i]) >= kMinTurnCos;
+        ok = dot(after.normals[i], before.normals[i]) >= kMaxShiftTurnCos;
       keep[k] = ok;
     });
     for (std::size_t k = 0; k < round.size(); ++k) {
