@@ -1,7 +1,8 @@
 // Vertices onto the input's untraced creases (finish/snap_to_creases): on a tent of four large
 // triangles, the centre of a fan of six triangles beside the ridge moves onto it, and the fan
-// lies on the faces again; a traced ridge, the ridge of a thin shell's other side, a pinned or a
-// far vertex, and a flat input stay as they are.
+// lies on the faces again; a row of neighbours beside the ridge all move onto it, alike on any
+// thread count; a traced ridge, the ridge of a thin shell's other side, a pinned or a far vertex,
+// and a flat input stay as they are.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
