@@ -15,6 +15,7 @@
 #include "finish/move_limits.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/triangles_around.hpp"
 #include "geometry/unit_vector.hpp"
 #include "quality/min_shape.hpp"
 
@@ -92,9 +93,9 @@ struct StarState {
 // The vertices with a value in `flagged`, in rounds no two members of which share an edge
 // (triangles `star` per vertex): each takes the first round none of its earlier neighbours is in.
 template <class T>
-std::vector<std::vector<Index>> independent_rounds(
-    const TriangleMesh& mesh, const std::vector<std::vector<std::size_t>>& star,
-    const std::vector<std::optional<T>>& flagged) {
+std::vector<std::vector<Index>> independent_rounds(const TriangleMesh& mesh,
+                                                   const std::vector<std::vector<Index>>& star,
+                                                   const std::vector<std::optional<T>>& flagged) {
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::size_t> round_of(flagged.size(), kNone);
   std::vector<std::vector<Index>> rounds;
@@ -102,7 +103,7 @@ std::vector<std::vector<Index>> independent_rounds(
   for (Index v = 0; v < flagged.size(); ++v) {
     if (!flagged[v]) continue;
     taken.assign(rounds.size(), false);
-    for (const std::size_t t : star[v])
+    for (const Index t : star[v])
       for (const Index u : mesh.triangles[t])
         if (u != v && round_of[u] != kNone) taken[round_of[u]] = true;
     const std::size_t r =
@@ -126,9 +127,7 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
   tree.build();  // before the queries, which run in parallel
   tree.accelerate_distance_queries();
   const std::size_t nv = output.vertices.size();
-  std::vector<std::vector<std::size_t>> star(nv);
-  for (std::size_t t = 0; t < output.triangles.size(); ++t)
-    for (const Index v : output.triangles[t]) star[v].push_back(t);
+  const std::vector<std::vector<Index>> star = triangles_around(output);
   const std::vector<double> shortest = shortest_edges(output);
   std::vector<bool> fixed(nv, false);  // on a boundary or non-manifold edge
   const std::vector<EdgeUse> uses = edge_uses(output);
@@ -143,7 +142,7 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
       return distance(p, projector.nearest(p, hint).point);
     };
     const auto at = [&](Index u) -> const Vec3& { return u == v ? x : output.vertices[u]; };
-    for (const std::size_t t : star[v]) {
+    for (const Index t : star[v]) {
       const Triangle& f = output.triangles[t];
       const Vec3 &a = at(f[0]), &b = at(f[1]), &c = at(f[2]);
       const MinShape shape = min_shape(a, b, c);
