@@ -60,6 +60,35 @@ TEST(SpatiallySorted, DoesNotDependOnTheGivenOrder) {
   EXPECT_EQ(a.triangles, b.triangles);
 }
 
+TEST(SpatiallySorted, TiesAreBrokenAlikeWhateverTheGivenOrder) {
+  // Equal Morton keys: mirrored copies of triangles (the same centroid), and vertices a
+  // millionth of a key cell from others (2^-21 of the extent). A sort that kept such ties in the
+  // order given would tell the copies apart.
+  TriangleMesh mesh = torus(1, 0.4, 40, 16);
+  const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
+  for (std::size_t t = 0; t < triangles; t += 7) {
+    const Triangle& f = mesh.triangles[t];
+    mesh.triangles.push_back({f[0], f[2], f[1]});
+  }
+  for (std::size_t v = 0; v < vertices; v += 5)
+    mesh.vertices.push_back(mesh.vertices[v] + Vec3{1e-12, 0, 0});
+  const TriangleMesh expected = spatially_sorted(mesh).mesh;
+  // The mirrored copies sit next to their originals, in one order.
+  std::size_t pairs = 0;
+  for (std::size_t t = 1; t < expected.triangles.size(); ++t) {
+    Triangle a = expected.triangles[t - 1], b = expected.triangles[t];
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    pairs += a == b;
+  }
+  EXPECT_EQ(pairs, (triangles + 6) / 7);
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const TriangleMesh got = spatially_sorted(shuffled(mesh, seed)).mesh;
+    EXPECT_EQ(got.vertices, expected.vertices) << "seed " << seed;
+    EXPECT_EQ(got.triangles, expected.triangles) << "seed " << seed;
+  }
+}
+
 TEST(RemeshInputOrder, AShuffledInputGivesTheSameOutput) {
   const TriangleMesh mesh = torus(1, 0.4, 60, 24);
   RemeshSettings s;
