@@ -34,6 +34,10 @@
 //     the cells' pieces, paper §4.4: what every polishing and topology round runs) on icosphere
 //     level 5 (20,480 faces) with N random seeds, against an RVD pass with integrals on the same
 //     seeds (extraction_over_pass).
+//   BM_PieceShapes/T: each cell piece's Euler characteristic and farthest vertex (what topology
+//     control's check of the ball property reads each round, voronoi/piece_euler), after a
+//     traversal with the pieces on icosphere level 5 with 10k random seeds, on T threads:
+//     the time of the shapes alone, and shapes_over_traversal.
 //   BM_SpreadSamples/N: the initial seeds of a uniform remesh, N points spread by sample
 //     elimination (spread_s) on icosphere level 5, against random ones (random_s) and one RVD
 //     pass with integrals on them (pass_s); spread_over_pass is the cost in passes (the spread
@@ -87,6 +91,7 @@
 #include "support/shapes.hpp"
 #include "support/shared_data.hpp"
 #include "voronoi/multi_nerve.hpp"
+#include "voronoi/piece_euler.hpp"
 #include "voronoi/seed_neighbors.hpp"
 
 namespace {
@@ -420,6 +425,33 @@ BENCHMARK(BM_MultiNerveExtraction)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+void BM_PieceShapes(benchmark::State& state) {
+  const TriangleMesh mesh = testing::icosphere(5);
+  const auto seeds = sample_surface(mesh, 10'000, 1);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    const RestrictedVoronoiDiagram rvd(mesh, seeds);
+    CellPieceCollector pieces(mesh);
+    PieceEulerCollector euler(mesh, seeds);
+    PolygonSink* sinks[] = {&pieces, &euler};
+    const auto start = Clock::now();
+    rvd.traverse(sinks);
+    const double traverse_s = seconds(start);
+    const auto shapes_start = Clock::now();
+    benchmark::DoNotOptimize(euler.shapes(pieces).size());
+    const double shapes_s = seconds(shapes_start);
+    state.SetIterationTime(shapes_s);
+    state.counters["shapes_over_traversal"] = shapes_s / traverse_s;
+  }
+}
+BENCHMARK(BM_PieceShapes)
+    ->Arg(1)
+    ->Arg(2)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5);
 
 void BM_CvtPass(benchmark::State& state) {
   const bool shared = state.range(0) == 1;

@@ -23,13 +23,16 @@ std::vector<std::size_t> seed_offsets(std::vector<std::size_t> count) {
   return count;
 }
 
-// Sorts each seed's range of `items` (laid out by `offsets`) by `less`: a cell's few items.
+// Sorts each seed's range of `items` (laid out by `offsets`) by `less`: a cell's few items, the
+// cells in parallel.
 template <class T, class Less>
 void sort_each_seed(std::vector<T>& items, const std::vector<std::size_t>& offsets,
                     const Less& less) {
-  for (std::size_t s = 0; s + 1 < offsets.size(); ++s)
-    std::sort(items.begin() + static_cast<std::ptrdiff_t>(offsets[s]),
-              items.begin() + static_cast<std::ptrdiff_t>(offsets[s + 1]), less);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, offsets.size() - 1), [&](const auto& r) {
+    for (std::size_t s = r.begin(); s != r.end(); ++s)
+      std::sort(items.begin() + static_cast<std::ptrdiff_t>(offsets[s]),
+                items.begin() + static_cast<std::ptrdiff_t>(offsets[s + 1]), less);
+  });
 }
 
 }  // namespace

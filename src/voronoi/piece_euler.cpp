@@ -1,7 +1,11 @@
 #include "voronoi/piece_euler.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 namespace cvtmesh {
 
@@ -26,9 +30,9 @@ void PieceEulerCollector::begin(std::size_t chunks) {
 void PieceEulerCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
   const auto& v = p.vertices;
   const Triangle& t = surface_.triangles[p.triangle];
-  Own own{p.seed, p.triangle, 1, v[0].point, -1};
+  Own own{p.seed, p.triangle, 1, static_cast<std::uint32_t>(shared_[chunk].size()), v[0].point, -1};
   auto share = [&](Kind kind, std::int64_t a, std::int64_t b) {
-    shared_[chunk].push_back({p.seed, p.triangle, {kind, a, b}});
+    shared_[chunk].push_back({kind, a, b});
   };
   for (std::size_t k = 0; k < v.size(); ++k) {
     const RvdVertex& a = v[k];
@@ -57,38 +61,54 @@ void PieceEulerCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
 }
 
 std::vector<PieceShape> PieceEulerCollector::shapes(const CellPieceCollector& pieces) const {
+  // Each polygon's piece, looked up chunk by chunk in parallel; and where it is, as (chunk,
+  // index in the chunk).
+  std::vector<std::size_t> first(own_.size() + 1, 0);
+  for (std::size_t c = 0; c < own_.size(); ++c) first[c + 1] = first[c] + own_[c].size();
+  std::vector<std::size_t> piece_of(first.back());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> at(first.back());
+  tbb::parallel_for(std::size_t{0}, own_.size(), [&](std::size_t c) {
+    for (std::size_t k = 0; k < own_[c].size(); ++k) {
+      piece_of[first[c] + k] = pieces.piece_at(own_[c][k].seed, own_[c][k].triangle);
+      at[first[c] + k] = {static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(k)};
+    }
+  });
   std::vector<PieceShape> out(pieces.pieces().size(), {0, {}});
   std::vector<double> farthest(out.size(), -1);
-  for (const auto& chunk : own_)
-    for (const Own& o : chunk) {
-      const std::size_t i = pieces.piece_at(o.seed, o.triangle);
-      out[i].euler += o.euler;
-      if (o.distance > farthest[i]) {
-        farthest[i] = o.distance;
-        out[i].farthest = o.farthest;
-      }
+  std::vector<std::size_t> offsets(out.size() + 1, 0);
+  for (std::size_t g = 0; g < at.size(); ++g) {
+    const Own& o = own_[at[g].first][at[g].second];
+    const std::size_t i = piece_of[g];
+    out[i].euler += o.euler;
+    if (o.distance > farthest[i]) {
+      farthest[i] = o.distance;
+      out[i].farthest = o.farthest;
     }
-  // Each piece's shared keys, counted once: scattered into piece order (a counting sort), then
-  // each piece's few sorted (sorting them all together was a twentieth of femur.off at 1k).
-  std::vector<std::size_t> piece_of_key, offsets(out.size() + 1, 0);
-  for (const auto& chunk : shared_)
-    for (const Shared& s : chunk) {
-      piece_of_key.push_back(pieces.piece_at(s.seed, s.triangle));
-      ++offsets[piece_of_key.back() + 1];
-    }
+    ++offsets[i + 1];
+  }
+  // Each piece's polygons (a counting sort of their places), then, piece by piece in parallel,
+  // the keys its polygons share with one another, each counted once (scattering the keys into
+  // piece order instead, serially, was most of this step: 24 bytes a key, written at random).
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
   std::vector<std::size_t> next(offsets.begin(), offsets.end() - 1);
-  std::vector<std::array<std::int64_t, 3>> keys(piece_of_key.size());
-  std::size_t k = 0;
-  for (const auto& chunk : shared_)
-    for (const Shared& s : chunk) keys[next[piece_of_key[k++]]++] = s.key;
-  for (std::size_t piece = 0; piece < out.size(); ++piece) {
-    const auto begin = keys.begin() + static_cast<std::ptrdiff_t>(offsets[piece]);
-    const auto end = keys.begin() + static_cast<std::ptrdiff_t>(offsets[piece + 1]);
-    std::sort(begin, end);
-    for (auto key = begin; key != end; ++key)
-      if (key == begin || *key != key[-1]) out[piece].euler += (*key)[0] == kEdge ? -1 : 1;
-  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> by_piece(at.size());
+  for (std::size_t g = 0; g < at.size(); ++g) by_piece[next[piece_of[g]]++] = at[g];
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size()), [&](const auto& range) {
+    std::vector<Key> keys;
+    for (std::size_t piece = range.begin(); piece != range.end(); ++piece) {
+      keys.clear();
+      for (std::size_t g = offsets[piece]; g < offsets[piece + 1]; ++g) {
+        const auto [c, k] = by_piece[g];
+        const std::size_t end =
+            k + 1 < own_[c].size() ? own_[c][k + 1].shared_begin : shared_[c].size();
+        keys.insert(keys.end(), shared_[c].begin() + own_[c][k].shared_begin,
+                    shared_[c].begin() + static_cast<std::ptrdiff_t>(end));
+      }
+      std::sort(keys.begin(), keys.end());
+      for (auto key = keys.begin(); key != keys.end(); ++key)
+        if (key == keys.begin() || *key != key[-1]) out[piece].euler += (*key)[0] == kEdge ? -1 : 1;
+    }
+  });
   return out;
 }
 

@@ -33,23 +33,23 @@ class PieceEulerCollector : public PolygonSink {
 
  private:
   // What one polygon adds on its own: its face, its vertices between two bisectors, its sides
-  // along a bisector, none of which another polygon of the cell has.
+  // along a bisector, none of which another polygon of the cell has; and where its shared keys
+  // start in its chunk's (they end where the next polygon's start).
   struct Own {
     Index seed, triangle;
     int euler;
+    std::uint32_t shared_begin;
     Vec3 farthest;
     double distance;
   };
-  // What it shares with other polygons of the cell: an input corner (+1), a crossing of an input
-  // edge and a bisector (+1), a stretch of an input edge (-1). Counted once per piece.
-  struct Shared {
-    Index seed, triangle;
-    std::array<std::int64_t, 3> key;  // kind, then input vertex or edge ids and a seed
-  };
+  // What a polygon shares with other polygons of the cell: an input corner (+1), a crossing of an
+  // input edge and a bisector (+1), a stretch of an input edge (-1). Counted once per piece. Its
+  // kind, then input vertex or edge ids and a seed.
+  using Key = std::array<std::int64_t, 3>;
   const TriangleMesh& surface_;
   const std::vector<Vec3>& seeds_;
   std::vector<std::vector<Own>> own_;
-  std::vector<std::vector<Shared>> shared_;
+  std::vector<std::vector<Key>> shared_;
 };
 
 }  // namespace cvtmesh
