@@ -4,10 +4,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <utility>
 
 namespace cvtmesh {
 
@@ -60,20 +58,14 @@ std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
                                     std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})),
                        t);
   }
-  // The boxes that overlap, found serially; then the exact tests, in parallel (serially, they
-  // were 3% of camel.off's remesh at 5k on two threads, where topology control needs them).
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
-      boxes.begin(), boxes.end(),
-      [&](const Box& p, const Box& q) { pairs.emplace_back(p.info(), q.info()); });
-  std::vector<char> crosses(pairs.size(), 0);
-  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
-    const auto [s, t] = pairs[k];
-    crosses[k] = cross(mesh, mesh.triangles[s], mesh.triangles[t]);
-  });
   std::vector<bool> crossing(mesh.triangles.size(), false);
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-    if (crosses[k]) crossing[pairs[k].first] = crossing[pairs[k].second] = true;
+  CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+      boxes.begin(), boxes.end(), [&](const Box& p, const Box& q) {
+        const std::size_t s = p.info(), t = q.info();
+        if ((crossing[s] && crossing[t]) || !cross(mesh, mesh.triangles[s], mesh.triangles[t]))
+          return;
+        crossing[s] = crossing[t] = true;
+      });
   return crossing;
 }
 
