@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <set>
 
 #include "finish/surface_gap.hpp"
 #include "finish/worst_shape.hpp"
@@ -30,11 +29,16 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     return surface.distance_to(centroid);
   };
   const std::vector<std::vector<Index>> around = triangles_around(mesh);
-  std::set<Triangle> present;  // each triangle's vertices, sorted
-  for (Triangle t : mesh.triangles) {
-    std::sort(t.begin(), t.end());
-    present.insert(t);
-  }
+  // Whether the mesh has a triangle on these vertices (sorted). Those added here need no
+  // search: their vertices are touched, and no fan with a touched vertex is merged. (A set of all
+  // the triangles, built for the few fans of valence three, was most of this step's time.)
+  const auto present = [&](const Triangle& key) {
+    return std::any_of(around[key[0]].begin(), around[key[0]].end(), [&](Index t) {
+      Triangle f = mesh.triangles[t];
+      std::sort(f.begin(), f.end());
+      return f == key;
+    });
+  };
   std::vector<bool> touched(mesh.vertices.size(), false), gone(mesh.triangles.size(), false);
   std::vector<Triangle> added;
   std::size_t removed = 0;
@@ -62,7 +66,7 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     if (touched[abc[0]] || touched[abc[1]] || touched[abc[2]]) continue;
     Triangle key{abc[0], abc[1], abc[2]};
     std::sort(key.begin(), key.end());
-    if (present.contains(key)) continue;
+    if (present(key)) continue;
     const Vec3 &a = mesh.vertices[abc[0]], &b = mesh.vertices[abc[1]], &c = mesh.vertices[abc[2]];
     const Vec3& p = mesh.vertices[v];
     WorstShape fan, merged;
@@ -84,7 +88,6 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     if (gap(a, b, c) > allowed_gap(fan_gap, longest)) continue;
     for (const Index t : around[v]) gone[t] = true;
     added.push_back({abc[0], abc[1], abc[2]});
-    present.insert(key);
     touched[v] = touched[abc[0]] = touched[abc[1]] = touched[abc[2]] = true;
     ++removed;
   }
