@@ -337,8 +337,4 @@ RvdVertex bisector_crossing(const ClipFrame& f, const RvdVertex& a, const RvdVer
   return v;
 }
 
-RvdVertex corner_vertex(const ClipFrame& f, int k) {
-  return {f.corners[k], 0.0, {-((k + 2) % 3) - 1, -k - 1}};
-}
-
 }  // namespace cvtmesh::predicates
