@@ -45,11 +45,17 @@ constexpr std::size_t kPolygonsPerChunk = 2048;
 // the chunks of its TraversalMemory's record that no changed seed reaches, instead of copying
 // them. (A power of two would change it more seldom still, but chunks just past one, whose
 // sinks' arrays then grow to twice what they hold, made igea's peak memory 6% higher.)
+// And at least kMinChunks chunks where the triangles allow, a count that depends on the triangles
+// alone: a small traversal (a small input, topology control's patches around its defects) then
+// keeps every core busy, where a chunk or two held all its work.
+constexpr std::size_t kMinChunks = 16;
 std::size_t triangles_per_chunk(std::size_t triangles, std::size_t seeds) {
   constexpr std::size_t kStep = 64;
   const double polygons_per_triangle = 1 + 4 * static_cast<double>(seeds) / triangles;
   const auto size = static_cast<std::size_t>(kPolygonsPerChunk / polygons_per_triangle);
-  return size < kStep ? std::max<std::size_t>(1, size) : size / kStep * kStep;
+  const std::size_t by_polygons =
+      size < kStep ? std::max<std::size_t>(1, size) : size / kStep * kStep;
+  return std::min(by_polygons, std::max<std::size_t>(1, (triangles + kMinChunks - 1) / kMinChunks));
 }
 
 // Nearest seeds stored per seed: enough for nearly every polygon of a centroidal tessellation
