@@ -19,7 +19,8 @@ std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh) {
   const std::vector<TriangleSide> sides = sorted_sides(mesh);
   std::vector<EdgeUse> uses;
   uses.reserve(sides.size());
-  for (const TriangleSide& s : sides) uses.push_back({{s.lo, s.hi}, 3 * s.triangle + s.side});
+  for (const TriangleSide& s : sides)
+    uses.push_back({{s.lo, s.hi}, 3 * std::size_t{s.triangle} + s.side});
   return uses;
 }
 

@@ -11,14 +11,16 @@ namespace cvtmesh {
 
 // One triangle side: the edge (lo, hi) with lo < hi, the triangle, whether the triangle walks it
 // from lo to hi, and which side it is (from the triangle's corner `side` to the next).
+// 16 bytes: the list of a large input's sides is written and read several times a remesh.
 struct TriangleSide {
   Index lo, hi;
-  std::size_t triangle;
+  Index triangle;
   bool forward;
   std::uint8_t side;
 };
 
-// Every triangle's three sides, sorted by (lo, hi, triangle, side).
+// Every triangle's three sides, sorted by (lo, hi, triangle, side). Throws std::length_error for
+// a mesh of 2^32 triangles or more.
 std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh);
 
 }  // namespace cvtmesh
