@@ -45,10 +45,11 @@
 //     sampling), and energy_ratio the spread seeds' CVT energy over the random ones'.
 //   BM_CvtPass/M: one evaluation of the CVT objective as the optimizer makes it in its steady
 //     state, on one thread: a diagram of 5,000 well-spread seeds (sample elimination, as a remesh
-//     starts) built with a warm NeighborCache, then traversed with integrals; M = 0 on icosphere
-//     level 5 (20,480 faces), 1 on ../shared/data/fandisk.off (12,946 faces). Timed as Google
-//     Benchmark times a loop (many iterations; compare runs by their min with repetitions),
-//     with counters polygons_per_pass and ns_per_polygon: the cost of the clipping core.
+//     starts) built with a warm NeighborCache, then traversed with integrals (the surface's unit
+//     normals kept, as the objective keeps them); M = 0 on icosphere level 5 (20,480 faces), 1 on
+//     ../shared/data/fandisk.off (12,946 faces). Timed as Google Benchmark times a loop (many
+//     iterations; compare runs by their min with repetitions), with counters polygons_per_pass and
+//     ns_per_polygon: the cost of the clipping core.
 //   BM_SeedOrder/N: N spread seeds (sample elimination, which returns them in Morton order) on
 //     icosphere level 6 (81,920 faces), in that order against the same seeds shuffled, on one
 //     thread: an RVD pass with integrals and an extraction, each with its build;
@@ -464,10 +465,11 @@ void BM_CvtPass(benchmark::State& state) {
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   NeighborCache cache;
   { const RestrictedVoronoiDiagram warm(mesh, seeds, cache); }
+  const std::vector<Vec3> normals = unit_normals(mesh);  // as the objective keeps them
   std::size_t polygons = 0;
   for (auto _ : state) {
     const RestrictedVoronoiDiagram rvd(mesh, seeds, cache);
-    CellIntegrator integrator(rvd);
+    CellIntegrator integrator(rvd, {}, normals);
     polygons = rvd.traverse(integrator).polygons;
     benchmark::DoNotOptimize(integrator.result().total_energy);
   }

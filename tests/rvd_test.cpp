@@ -10,6 +10,7 @@
 #include <numbers>
 #include <numeric>
 #include <tuple>
+#include <utility>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/rvd.hpp"
@@ -418,6 +419,28 @@ TEST(RvdIntegrals, UniformDensityPathMatchesTheGeneralOne) {
     EXPECT_NEAR(norm(u.moment[s] - g.moment[s]), 0.0, 1e-13);
   }
   EXPECT_GT(u.total_energy, 0);
+}
+
+TEST(RvdIntegrals, StoredUnitNormalsGiveTheSameSumsBitForBit) {
+  // The optimizer keeps the surface's unit normals for every evaluation; the integrals are those
+  // computed with each polygon's own, with a density or without. The wrong count is refused.
+  const TriangleMesh m = torus(1, 0.4, 24, 12);
+  const std::vector<Vec3> seeds = sample_surface(m, 60, 4);
+  const RestrictedVoronoiDiagram rvd(m, seeds);
+  const std::vector<Vec3> normals = unit_normals(m);
+  std::vector<double> rho(m.vertices.size());
+  for (std::size_t v = 0; v < rho.size(); ++v) rho[v] = 1 + m.vertices[v].z * m.vertices[v].z;
+  CellIntegrator plain(rvd), stored(rvd, {}, normals), dense(rvd, rho),
+      dense_stored(rvd, rho, normals);
+  PolygonSink* sinks[] = {&plain, &stored, &dense, &dense_stored};
+  rvd.traverse(sinks);
+  for (const auto& [a, b] : {std::pair(&plain, &stored), std::pair(&dense, &dense_stored)}) {
+    EXPECT_EQ(a->result().mass, b->result().mass);
+    EXPECT_EQ(a->result().energy, b->result().energy);
+    EXPECT_EQ(a->result().moment, b->result().moment);
+  }
+  const std::vector<Vec3> too_few(normals.begin(), normals.end() - 1);
+  EXPECT_THROW(CellIntegrator(rvd, {}, too_few), InvalidArgument);
 }
 
 // A few Lloyd steps (seeds to their restricted centroids) spread random seeds evenly.

@@ -26,9 +26,12 @@ struct CellIntegrals {
 
 class CellIntegrator : public PolygonSink {
  public:
-  // `density`: one value per input vertex, > 0; empty means ρ = 1. Not copied: it must outlive
-  // the integrator.
-  CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<const double> density = {});
+  // `density`: one value per input vertex, > 0; empty means ρ = 1. `unit_normals`: one per input
+  // triangle, unit_normals(surface) of the diagram's surface, for a caller that integrates over
+  // one surface many times (an optimization); empty: each polygon's is computed. Neither is
+  // copied: they must outlive the integrator.
+  CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<const double> density = {},
+                 std::span<const Vec3> unit_normals = {});
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
@@ -42,9 +45,13 @@ class CellIntegrator : public PolygonSink {
   };
   const RestrictedVoronoiDiagram& rvd_;
   std::span<const double> density_;
+  std::span<const Vec3> unit_normals_;
   std::vector<std::vector<Contribution>> chunks_;
   CellIntegrals result_;
 };
+
+// Each triangle's unit normal (zero for a degenerate one), for CellIntegrator.
+std::vector<Vec3> unit_normals(const TriangleMesh& surface);
 
 // The restricted Delaunay triangulation (paper §4.4): a triangle (i, j, k) for every RVD vertex
 // of type C, each triangle once, oriented like the input facet it crosses. Its vertices are the

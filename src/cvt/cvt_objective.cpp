@@ -78,7 +78,8 @@ CvtObjective::Evaluation CvtObjective::operator()(std::vector<Vec3>& seeds) {
   ++evaluations_;
   const RestrictedVoronoiDiagram rvd(surface_, seeds, neighbors_);
   CellIntegrator integrator(
-      rvd, density_ ? std::span<const double>(*density_) : std::span<const double>{});
+      rvd, density_ ? std::span<const double>(*density_) : std::span<const double>{},
+      unit_normals_);
   InterruptSink stop(interrupt_);
   PolygonSink* sinks[] = {&integrator, &stop};
   rvd.traverse(sinks);

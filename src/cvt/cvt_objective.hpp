@@ -27,7 +27,8 @@ class CvtObjective {
         features_(features),
         curves_(curves),
         interrupt_(interrupt ? *interrupt : kNever),
-        density_(density && !density->empty() ? density : nullptr) {}
+        density_(density && !density->empty() ? density : nullptr),
+        unit_normals_(unit_normals(surface)) {}
 
   struct Evaluation {
     double energy;
@@ -74,6 +75,7 @@ class CvtObjective {
   int evaluations_ = 0;
   std::vector<SurfaceProjector::Foot> hints_;  // the feet of the last projection
   NeighborCache neighbors_;                    // the seeds' nearest seeds, step to step
+  std::vector<Vec3> unit_normals_;             // the surface's, for every evaluation
 };
 
 }  // namespace cvtmesh

@@ -1,5 +1,7 @@
 // CVT integrals over the RVD (paper §4.2, eq. 5-6): each clipped polygon is split into a fan of
 // triangles, on which ρ (linear over the input triangle) and ‖x − x_i‖² are integrated exactly.
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "cvtmesh/errors.hpp"
@@ -82,10 +84,22 @@ std::vector<Vec3> CellIntegrals::gradient(const std::vector<Vec3>& seeds) const 
   return g;
 }
 
-CellIntegrator::CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<const double> density)
-    : rvd_(rvd), density_(density) {
+std::vector<Vec3> unit_normals(const TriangleMesh& surface) {
+  std::vector<Vec3> normals(surface.triangles.size());
+  tbb::parallel_for(std::size_t{0}, normals.size(), [&](std::size_t t) {
+    const auto [a, b, c] = surface.corners(t);
+    normals[t] = unit_normal(a, b, c);
+  });
+  return normals;
+}
+
+CellIntegrator::CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<const double> density,
+                               std::span<const Vec3> unit_normals)
+    : rvd_(rvd), density_(density), unit_normals_(unit_normals) {
   if (!density_.empty() && density_.size() != rvd.surface().vertices.size())
     throw InvalidArgument("density needs one value per input vertex");
+  if (!unit_normals_.empty() && unit_normals_.size() != rvd.surface().triangles.size())
+    throw InvalidArgument("unit normals need one per input triangle");
   if (std::any_of(density_.begin(), density_.end(), [](double r) { return !(r > 0); }))
     throw InvalidArgument("density values must be positive and finite");
 }
@@ -97,8 +111,13 @@ void CellIntegrator::begin(std::size_t chunks) {
 void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
   const Vec3& seed = rvd_.seeds()[poly.seed];
   const auto& v = poly.vertices;
-  const auto corners = rvd_.surface().corners(poly.triangle);
-  const Vec3 n = unit_normal(corners[0], corners[1], corners[2]);
+  // The input triangle's normal, stored or computed alike: the same sums either way.
+  const auto normal = [&] {
+    if (!unit_normals_.empty()) return unit_normals_[poly.triangle];
+    const auto [a, b, c] = rvd_.surface().corners(poly.triangle);
+    return unit_normal(a, b, c);
+  };
+  const Vec3 n = normal();
   Contribution c{poly.seed, 0, 0, {}};
   if (density_.empty()) {
     for (std::size_t k = 1; k + 1 < v.size(); ++k) {
@@ -110,6 +129,7 @@ void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
     chunks_[chunk].push_back(c);
     return;
   }
+  const auto corners = rvd_.surface().corners(poly.triangle);
   auto rho = [&](const Vec3& p) {
     const Triangle& f = rvd_.surface().triangles[poly.triangle];
     const auto l = barycentric(p, corners);
