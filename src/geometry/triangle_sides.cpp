@@ -14,17 +14,18 @@ namespace cvtmesh {
 // Sorted by (lo, hi, triangle, side): a counting sort on lo (stable, so each bucket is in triangle
 // order), then each bucket, a vertex's few sides, by hi. Linear where one global sort of the
 // 3·F sides was the report's largest cost on big inputs.
-std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh) {
-  if (mesh.triangles.size() > std::numeric_limits<Index>::max())
+std::vector<TriangleSide> sorted_sides(std::size_t vertices,
+                                       const std::vector<Triangle>& triangles) {
+  if (triangles.size() > std::numeric_limits<Index>::max())
     throw std::length_error("too many triangles for their sides' list");
-  std::vector<std::size_t> start(mesh.vertices.size() + 1, 0);
-  for (const Triangle& f : mesh.triangles)
+  std::vector<std::size_t> start(vertices + 1, 0);
+  for (const Triangle& f : triangles)
     for (int k = 0; k < 3; ++k) ++start[std::min(f[k], f[(k + 1) % 3]) + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<TriangleSide> sides(3 * mesh.triangles.size());
+  std::vector<TriangleSide> sides(3 * triangles.size());
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& f = mesh.triangles[t];
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const Triangle& f = triangles[t];
     for (int k = 0; k < 3; ++k) {
       const Index a = f[k], b = f[(k + 1) % 3];
       sides[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), static_cast<Index>(t), a < b,
@@ -41,6 +42,10 @@ std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh) {
                 });
   });
   return sides;
+}
+
+std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh) {
+  return sorted_sides(mesh.vertices.size(), mesh.triangles);
 }
 
 }  // namespace cvtmesh

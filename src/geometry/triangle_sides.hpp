@@ -22,5 +22,8 @@ struct TriangleSide {
 // Every triangle's three sides, sorted by (lo, hi, triangle, side). Throws std::length_error for
 // a mesh of 2^32 triangles or more.
 std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh);
+// The same for triangles over `vertices` vertices.
+std::vector<TriangleSide> sorted_sides(std::size_t vertices,
+                                       const std::vector<Triangle>& triangles);
 
 }  // namespace cvtmesh
