@@ -565,8 +565,10 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "time_s",
                           "timings"})
     EXPECT_TRUE(j.contains(key)) << key;
-  for (const char* key : {"initialization", "rcvt", "ccvt", "extraction", "topology_control"})
+  for (const char* key :
+       {"initialization", "rcvt", "ccvt", "extraction", "topology_control", "hausdorff"})
     EXPECT_TRUE(j["timings"].contains(key)) << key;
+  EXPECT_GT(j["timings"]["hausdorff"].get<double>(), 0);
   // Its checks and last step run even where it adds no seed: part of the extraction.
   EXPECT_LE(j["timings"]["topology_control"].get<double>(),
             j["timings"]["extraction"].get<double>());
@@ -586,6 +588,7 @@ TEST(CliRemesh, NoHausdorffLeavesTheDistanceOutOfTheReport) {
   EXPECT_TRUE(j["hausdorff_max_pct"].is_null());
   EXPECT_TRUE(j["hausdorff_mean_pct"].is_null());
   EXPECT_EQ(j["hausdorff_samples"], 0);
+  EXPECT_EQ(j["timings"]["hausdorff"], 0);
   EXPECT_EQ(j["same_topology"], true);
   const CliRun text = run_cli(dir, "remesh --quiet --vertices 300 --no-hausdorff " + io);
   ASSERT_EQ(text.code, 0) << text.err;

@@ -74,6 +74,22 @@ TEST(Hausdorff, FarVertexAmongManyIsFound) {
   EXPECT_NEAR(h.max, 0.125, 1e-12);
 }
 
+TEST(Hausdorff, MaxAtAnEdgeMiddleIsFound) {
+  // A thin triangle at height 2 over a valley z = |x|: along its long edge, on y = 0 from x = -1
+  // to 1, the distance to the valley is (2 - |x|)/√2, √2 at the edge's midpoint, 1/√2 at its
+  // ends (and at its third vertex). One sample cannot be expected to land there; the midpoint is
+  // measured.
+  TriangleMesh thin;
+  thin.vertices = {{-1, 0, 2}, {1, 0, 2}, {-1, 0.01, 2}};
+  thin.triangles = {{0, 1, 2}};
+  TriangleMesh valley;
+  valley.vertices = {{-2, -1, 2}, {0, -1, 0}, {0, 1, 0}, {-2, 1, 2}, {2, -1, 2}, {2, 1, 2}};
+  valley.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
+  const HausdorffReport h = hausdorff_distance(thin, valley, {.samples = 1});
+  EXPECT_NEAR(h.a_to_b.max, std::sqrt(2.0), 1e-12);
+  EXPECT_LT(h.a_to_b.mean, std::sqrt(2.0) - 1e-3);  // the one sample, elsewhere
+}
+
 TEST(Hausdorff, ResultDoesNotDependOnThreadCount) {
   const TriangleMesh a = icosphere(3), b = transformed(torus(1, 0.4, 32, 16), 1.0, {0.1, 0, 0});
   HausdorffReport one, all;

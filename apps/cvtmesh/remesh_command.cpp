@@ -247,9 +247,10 @@ void add_remesh_command(CLI::App& app, Action& run) {
                   "RCVT alone, on a surface without features, takes CCVT's too)")
       ->default_val(10)
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option(
-         "--samples", o->samples,
-         "Hausdorff samples per surface for the report, besides all vertices (0 = as `quality`)")
+  cmd->add_option("--samples", o->samples,
+                  "Hausdorff samples per surface for the report, spread evenly, besides all "
+                  "vertices and edge "
+                  "midpoints (0 = as `quality`)")
       ->default_val(kRemeshReportSamples);
   cmd->add_flag("--no-hausdorff", o->no_hausdorff,
                 "Skip the report's Hausdorff distance (its JSON keys are null)");

@@ -1,5 +1,6 @@
-// Two-sided Hausdorff distance between surfaces, Metro-style: dense area-uniform samples of
-// each surface plus its vertices, each sample's distance to the other surface by an AABB tree.
+// Two-sided Hausdorff distance between surfaces, Metro-style: area-uniform samples of each
+// surface, spread evenly, plus its vertices and edge midpoints, each point's distance to the
+// other surface by an AABB tree.
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,8 @@
 namespace cvtmesh {
 
 struct HausdorffSettings {
-  // Area-uniform samples per surface, in addition to its vertices. 0 = automatic:
+  // Area-uniform samples per surface, spread evenly (stratified), in addition to its vertices
+  // and edge midpoints, which count for the max only. 0 = automatic:
   // max(200'000, 2 × triangles of the larger mesh), capped at 1'000'000.
   std::size_t samples = 0;
   std::uint64_t seed = 1;  // sampling is deterministic for a given seed, on any thread count

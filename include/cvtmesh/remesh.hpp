@@ -116,6 +116,8 @@ struct RemeshResult {
   // without sharp features when keeping them cost the topology (counted in every phase when
   // its output is taken, else in seconds_extraction).
   double seconds_topology = 0;
+  // The report's Hausdorff distance (`hausdorff`), not part of the remesh's phases.
+  double seconds_hausdorff = 0;
   std::vector<double> energies;           // energy after each accepted iteration, in order
   std::size_t defects_polished = 0;       // badly shaped triangles before polishing
   int polish_rounds = 0;                  // polishing rounds that moved seeds

@@ -192,8 +192,9 @@ seeds_file : str
 iterations : int, default 10
     Iteration cap of each phase (RCVT, then CCVT; half for RCVT from the spread initial seeds,
     and RCVT alone, on a surface without features, takes CCVT's too).
-samples : int, default 20000
-    Hausdorff samples per surface for the report, besides all vertices.
+samples : int, default 8000
+    Hausdorff samples per surface for the report (spread evenly), besides all vertices and edge
+    midpoints.
 no_hausdorff : bool, default False
     Skip the Hausdorff distance (its report keys are None).
 polish_rounds : int, default 3

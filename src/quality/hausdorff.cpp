@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "cvtmesh/errors.hpp"
-#include "geometry/area_sampler.hpp"
+#include "geometry/even_samples.hpp"
 #include "geometry/spatial_order.hpp"
 #include "geometry/surface_projector.hpp"
 #include "quality/hausdorff_with_tree.hpp"
@@ -18,27 +18,22 @@ namespace {
 
 constexpr std::size_t kChunk = 1024;
 
-// Max over samples and vertices; mean and RMS over the area samples (an unbiased estimate of
-// the area-weighted mean). Queries run in Morton order, in fixed chunks, each query starting
-// from the previous one's foot: nearby points, so a short search. The distances do not depend on
-// that order, and the reduction runs serially in sample order: bit-identical for any thread count.
-OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
-                           std::size_t samples, std::uint64_t seed) {
-  const AreaSampler sampler(from, seed);
-  if (!sampler.has_area()) samples = 0;
-  std::vector<AreaSampler::Sample> points(samples);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples, 4096), [&](const auto& range) {
-    for (std::size_t i = range.begin(); i < range.end(); ++i) points[i] = sampler.sample(i);
-  });
-  std::vector<Vec3> at(samples);
-  for (std::size_t i = 0; i < samples; ++i) at[i] = points[i].point;
-  const std::vector<Index> order = spatial_order(at);
+// Max over samples, vertices and edge midpoints; mean and RMS over the area samples, spread evenly
+// (even_area_samples: an unbiased estimate of the area-weighted mean, closer than independent
+// samples). Queries run in Morton order, in fixed chunks, each query starting from the previous
+// one's foot: nearby points, so a short search. The distances do not depend on that order, and
+// the reduction runs serially in sample order: bit-identical for any thread count.
+OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to, std::size_t count,
+                           std::uint64_t seed) {
+  const std::vector<Vec3> points = even_area_samples(from, count, seed);
+  const std::size_t samples = points.size();
+  const std::vector<Index> order = spatial_order(points);
   std::vector<double> d2(samples);
   tbb::parallel_for(std::size_t{0}, (samples + kChunk - 1) / kChunk, [&](std::size_t chunk) {
     const std::size_t begin = chunk * kChunk, end = std::min(samples, begin + kChunk);
-    SurfaceProjector::Foot foot = to.nearest(points[order[begin]].point);
+    SurfaceProjector::Foot foot = to.nearest(points[order[begin]]);
     for (std::size_t k = begin; k < end; ++k) {
-      const Vec3& p = points[order[k]].point;
+      const Vec3& p = points[order[k]];
       if (k > begin) foot = to.nearest(p, foot);
       d2[order[k]] = dot(foot.point - p, foot.point - p);
     }
@@ -54,18 +49,62 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
   // triangle (an upper bound on its distance to the surface) is within the max so far cannot
   // raise it, so it needs no search: on a big input (igea's 270k vertices) most need none. The
   // max is the exact max whatever the order, so it does not depend on the thread count either.
+  // Each vertex keeps that bound, or its distance, for the next pass.
   const std::size_t vertices = from.vertices.size();
   const std::vector<Index> vertex_order = spatial_order(from.vertices);
+  std::vector<double> reach(vertices);  // the distance bound
   std::vector<double> chunk_max((vertices + kChunk - 1) / kChunk, max_sq);
   tbb::parallel_for(std::size_t{0}, chunk_max.size(), [&](std::size_t chunk) {
     const std::size_t begin = chunk * kChunk, end = std::min(vertices, begin + kChunk);
     double& max = chunk_max[chunk];
     SurfaceProjector::Foot foot = to.nearest(from.vertices[vertex_order[begin]]);
     for (std::size_t k = begin; k < end; ++k) {
-      const Vec3& p = from.vertices[vertex_order[k]];
-      if (k > begin && to.squared_distance_to(p, foot.triangle) <= max) continue;
+      const Index v = vertex_order[k];
+      const Vec3& p = from.vertices[v];
+      const double above = to.squared_distance_to(p, foot.triangle);
+      reach[v] = std::sqrt(above);
+      if (k > begin && above <= max) continue;
       if (k > begin) foot = to.nearest(p, foot);
-      max = std::max(max, dot(foot.point - p, foot.point - p));
+      const double squared = dot(foot.point - p, foot.point - p);
+      reach[v] = std::sqrt(squared);
+      max = std::max(max, squared);
+    }
+  });
+  for (const double m : chunk_max) max_sq = std::max(max_sq, m);
+  // Then the edges' midpoints, for the max too: where the max lies along an edge, as along a
+  // crease that the other surface rounds off, samples seldom land on it. A midpoint whose
+  // distance cannot exceed the max (an end's bound plus half the edge: a distance to a surface
+  // changes no faster than the point moves) needs no search: on a dense surface, nearly all.
+  // Those left are searched as the samples are, in Morton order, each from the previous foot.
+  const std::size_t triangles = from.triangles.size();
+  std::vector<std::uint8_t> open(3 * triangles);
+  tbb::parallel_for(std::size_t{0}, triangles, [&](std::size_t t) {
+    const Triangle& f = from.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const Index v = f[k], w = f[(k + 1) % 3];
+      const double most =
+          std::min(reach[v], reach[w]) + 0.5 * distance(from.vertices[v], from.vertices[w]);
+      open[3 * t + k] = most * most > max_sq;
+    }
+  });
+  std::vector<Vec3> midpoints;
+  for (std::size_t t = 0; t < triangles; ++t)
+    for (int k = 0; k < 3; ++k)
+      if (open[3 * t + k]) {
+        const Triangle& f = from.triangles[t];
+        midpoints.push_back(0.5 * (from.vertices[f[k]] + from.vertices[f[(k + 1) % 3]]));
+      }
+  const std::vector<Index> midpoint_order = spatial_order(midpoints);
+  chunk_max.assign((midpoints.size() + kChunk - 1) / kChunk, max_sq);
+  tbb::parallel_for(std::size_t{0}, chunk_max.size(), [&](std::size_t chunk) {
+    const std::size_t begin = chunk * kChunk, end = std::min(midpoints.size(), begin + kChunk);
+    SurfaceProjector::Foot foot = to.nearest(midpoints[midpoint_order[begin]]);
+    for (std::size_t k = begin; k < end; ++k) {
+      const Vec3& p = midpoints[midpoint_order[k]];
+      // An edge of two triangles is there twice, the same point: next to itself in the order.
+      if (k > begin && p == midpoints[midpoint_order[k - 1]]) continue;
+      if (k > begin) foot = to.nearest(p, foot);
+      chunk_max[chunk] = std::max(chunk_max[chunk], dot(foot.point - p, foot.point - p));
     }
   });
   for (const double m : chunk_max) max_sq = std::max(max_sq, m);

@@ -603,9 +603,12 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
   all.input_topology = analyze_topology(input);
   if (junction) all.sheets_apart = parts.size();
   all.edge_length_ratio = ratio_percentiles(std::move(ratios));
-  if (settings.hausdorff && !all.mesh.triangles.empty())
+  if (settings.hausdorff && !all.mesh.triangles.empty()) {
+    const auto hausdorff_start = std::chrono::steady_clock::now();
     all.hausdorff =
         hausdorff_distance(all.mesh, input, SurfaceProjector(input), *settings.hausdorff);
+    all.seconds_hausdorff = seconds_since(hausdorff_start);
+  }
   return all;
 }
 

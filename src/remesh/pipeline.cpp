@@ -313,8 +313,11 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.seconds_extraction = seconds_since(extraction_start);
   result.time_limit_reached = interrupt.timed_out();
   interrupt.check();
-  if (settings.hausdorff && !result.mesh.triangles.empty())
+  if (settings.hausdorff && !result.mesh.triangles.empty()) {
+    const auto hausdorff_start = Clock::now();
     result.hausdorff = hausdorff_distance(result.mesh, input, *projector, *settings.hausdorff);
+    result.seconds_hausdorff = seconds_since(hausdorff_start);
+  }
   return {std::move(result), std::move(ratios)};
 }
 

@@ -83,7 +83,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
                   {"rcvt", r.seconds_rcvt},
                   {"ccvt", r.seconds_ccvt},
                   {"extraction", r.seconds_extraction},
-                  {"topology_control", r.seconds_topology}};
+                  {"topology_control", r.seconds_topology},
+                  {"hausdorff", r.seconds_hausdorff}};
 
   std::string& text = report.text;
   if (!r.features.empty()) {
