@@ -49,7 +49,7 @@ MeshReport report_mesh(const std::string& name, const TriangleMesh& mesh,
 // besides every vertex and edge midpoint of both meshes: the mean's sampling error is about 1%
 // (eight.off at 1k vertices: 0.0598% against 0.0601% with 200k samples; over the 57 shared meshes
 // at 1k, 0.8% from the dense figure on average, where 20k independent samples were 1.0%), and
-// at 1k vertices the report costs a median 7% of the remesh (12% with 20k independent samples,
+// at 1k vertices the report costs a median 8% of the remesh (12% with 20k independent samples,
 // 2 to 30 ms). `quality --ref` measures densely.
 inline constexpr std::size_t kRemeshReportSamples = 8'000;
 

@@ -49,10 +49,12 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
   // triangle (an upper bound on its distance to the surface) is within the max so far cannot
   // raise it, so it needs no search: on a big input (igea's 270k vertices) most need none. The
   // max is the exact max whatever the order, so it does not depend on the thread count either.
-  // Each vertex keeps that bound, or its distance, for the next pass.
+  // Each vertex keeps that bound, or its distance, and the triangle it is measured to, for the
+  // next pass.
   const std::size_t vertices = from.vertices.size();
   const std::vector<Index> vertex_order = spatial_order(from.vertices);
-  std::vector<double> reach(vertices);  // the distance bound
+  std::vector<double> reach(vertices);  // the distance bound, squared
+  std::vector<std::size_t> reach_triangle(vertices);
   std::vector<double> chunk_max((vertices + kChunk - 1) / kChunk, max_sq);
   tbb::parallel_for(std::size_t{0}, chunk_max.size(), [&](std::size_t chunk) {
     const std::size_t begin = chunk * kChunk, end = std::min(vertices, begin + kChunk);
@@ -62,29 +64,36 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
       const Index v = vertex_order[k];
       const Vec3& p = from.vertices[v];
       const double above = to.squared_distance_to(p, foot.triangle);
-      reach[v] = std::sqrt(above);
+      reach[v] = above;
+      reach_triangle[v] = foot.triangle;
       if (k > begin && above <= max) continue;
       if (k > begin) foot = to.nearest(p, foot);
       const double squared = dot(foot.point - p, foot.point - p);
-      reach[v] = std::sqrt(squared);
+      reach[v] = squared;
+      reach_triangle[v] = foot.triangle;
       max = std::max(max, squared);
     }
   });
   for (const double m : chunk_max) max_sq = std::max(max_sq, m);
   // Then the edges' midpoints, for the max too: where the max lies along an edge, as along a
   // crease that the other surface rounds off, samples seldom land on it. A midpoint whose
-  // distance cannot exceed the max (an end's bound plus half the edge: a distance to a surface
-  // changes no faster than the point moves) needs no search: on a dense surface, nearly all.
-  // Those left are searched as the samples are, in Morton order, each from the previous foot.
+  // distance cannot exceed the max needs no search: on a dense surface, nearly all. Its bounds:
+  // an end's bound plus half the edge (a distance to a surface changes no faster than the point
+  // moves), then the larger of the two ends' distances to the triangle an end is measured to (the
+  // distance to a triangle, a convex set, is convex along the edge). Those left are searched as
+  // the samples are, in Morton order, each from the previous foot.
   const std::size_t triangles = from.triangles.size();
   std::vector<std::uint8_t> open(3 * triangles);
   tbb::parallel_for(std::size_t{0}, triangles, [&](std::size_t t) {
     const Triangle& f = from.triangles[t];
     for (int k = 0; k < 3; ++k) {
       const Index v = f[k], w = f[(k + 1) % 3];
-      const double most =
-          std::min(reach[v], reach[w]) + 0.5 * distance(from.vertices[v], from.vertices[w]);
-      open[3 * t + k] = most * most > max_sq;
+      const Vec3 &p = from.vertices[v], &q = from.vertices[w];
+      const double most = std::sqrt(std::min(reach[v], reach[w])) + 0.5 * distance(p, q);
+      open[3 * t + k] =
+          most * most > max_sq &&
+          std::min(std::max(reach[v], to.squared_distance_to(q, reach_triangle[v])),
+                   std::max(reach[w], to.squared_distance_to(p, reach_triangle[w]))) > max_sq;
     }
   });
   std::vector<Vec3> midpoints;
