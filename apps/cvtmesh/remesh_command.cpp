@@ -249,8 +249,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--samples", o->samples,
                   "Hausdorff samples per surface for the report, spread evenly, besides all "
-                  "vertices and edge "
-                  "midpoints (0 = as `quality`)")
+                  "vertices and edge midpoints (0 = as `quality`)")
       ->default_val(kRemeshReportSamples);
   cmd->add_flag("--no-hausdorff", o->no_hausdorff,
                 "Skip the report's Hausdorff distance (its JSON keys are null)");
