@@ -18,26 +18,36 @@ namespace {
 
 constexpr std::size_t kChunk = 1024;
 
-// Max over samples, vertices and edge midpoints; mean and RMS over the area samples, spread evenly
-// (even_area_samples: an unbiased estimate of the area-weighted mean, closer than independent
-// samples). Queries run in Morton order, in fixed chunks, each query starting from the previous
-// one's foot: nearby points, so a short search. The distances do not depend on that order, and
-// the reduction runs serially in sample order: bit-identical for any thread count.
-OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to, std::size_t count,
-                           std::uint64_t seed) {
-  const std::vector<Vec3> points = even_area_samples(from, count, seed);
-  const std::size_t samples = points.size();
+// Each point's squared distance to the surface. Queries run in Morton order, in fixed chunks,
+// each starting from the previous one's foot: nearby points, so a short search. A point equal to
+// the one before it in that order (an edge's midpoint, listed by both its triangles) takes its
+// distance. The distances do not depend on the order: the same on any thread count.
+std::vector<double> squared_distances(const std::vector<Vec3>& points, const SurfaceProjector& to) {
   const std::vector<Index> order = spatial_order(points);
-  std::vector<double> d2(samples);
-  tbb::parallel_for(std::size_t{0}, (samples + kChunk - 1) / kChunk, [&](std::size_t chunk) {
-    const std::size_t begin = chunk * kChunk, end = std::min(samples, begin + kChunk);
+  std::vector<double> d2(points.size());
+  tbb::parallel_for(std::size_t{0}, (points.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+    const std::size_t begin = chunk * kChunk, end = std::min(points.size(), begin + kChunk);
     SurfaceProjector::Foot foot = to.nearest(points[order[begin]]);
     for (std::size_t k = begin; k < end; ++k) {
       const Vec3& p = points[order[k]];
+      if (k > begin && p == points[order[k - 1]]) {
+        d2[order[k]] = d2[order[k - 1]];
+        continue;
+      }
       if (k > begin) foot = to.nearest(p, foot);
       d2[order[k]] = dot(foot.point - p, foot.point - p);
     }
   });
+  return d2;
+}
+
+// Max over samples, vertices and edge midpoints; mean and RMS over the area samples, spread evenly
+// (even_area_samples: an unbiased estimate of the area-weighted mean, closer than independent
+// samples). The reductions run serially in sample order: bit-identical for any thread count.
+OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to, std::size_t count,
+                           std::uint64_t seed) {
+  const std::vector<double> d2 = squared_distances(even_area_samples(from, count, seed), to);
+  const std::size_t samples = d2.size();
   OneSidedDistance r;
   double sum = 0, sum_sq = 0, max_sq = 0;
   for (const double d : d2) max_sq = std::max(max_sq, d), sum += std::sqrt(d), sum_sq += d;
@@ -81,7 +91,7 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
   // an end's bound plus half the edge (a distance to a surface changes no faster than the point
   // moves), then the larger of the two ends' distances to the triangle an end is measured to (the
   // distance to a triangle, a convex set, is convex along the edge). Those left are searched as
-  // the samples are, in Morton order, each from the previous foot.
+  // the samples are.
   const std::size_t triangles = from.triangles.size();
   std::vector<std::uint8_t> open(3 * triangles);
   tbb::parallel_for(std::size_t{0}, triangles, [&](std::size_t t) {
@@ -103,20 +113,7 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
         const Triangle& f = from.triangles[t];
         midpoints.push_back(0.5 * (from.vertices[f[k]] + from.vertices[f[(k + 1) % 3]]));
       }
-  const std::vector<Index> midpoint_order = spatial_order(midpoints);
-  chunk_max.assign((midpoints.size() + kChunk - 1) / kChunk, max_sq);
-  tbb::parallel_for(std::size_t{0}, chunk_max.size(), [&](std::size_t chunk) {
-    const std::size_t begin = chunk * kChunk, end = std::min(midpoints.size(), begin + kChunk);
-    SurfaceProjector::Foot foot = to.nearest(midpoints[midpoint_order[begin]]);
-    for (std::size_t k = begin; k < end; ++k) {
-      const Vec3& p = midpoints[midpoint_order[k]];
-      // An edge of two triangles is there twice, the same point: next to itself in the order.
-      if (k > begin && p == midpoints[midpoint_order[k - 1]]) continue;
-      if (k > begin) foot = to.nearest(p, foot);
-      chunk_max[chunk] = std::max(chunk_max[chunk], dot(foot.point - p, foot.point - p));
-    }
-  });
-  for (const double m : chunk_max) max_sq = std::max(max_sq, m);
+  for (const double d : squared_distances(midpoints, to)) max_sq = std::max(max_sq, d);
   r.max = std::sqrt(max_sq);
   return r;
 }
