@@ -43,6 +43,27 @@ struct Component {
   double area = 0;
 };
 
+// Whether the triangles joined in `sets` make one component whose vertices each lie in one fan,
+// but those on edges of three or more triangles (`branching`), which have a copy per component:
+// then the whole is its one part, without pinches, and split_components makes no copy of it.
+bool one_part_without_pinches(const TriangleMesh& mesh, UnionFind& sets, UnionFind& fans,
+                              const std::vector<bool>& branching) {
+  const std::size_t triangles = mesh.triangles.size();
+  for (std::size_t t = 1; t < triangles; ++t)
+    if (sets.find(t) != sets.find(0)) return false;
+  std::vector<std::size_t> fan_of(mesh.vertices.size(), triangles * 3);  // none yet
+  for (std::size_t c = 0; c < 3 * triangles; ++c) {
+    const Index v = mesh.triangles[c / 3][c % 3];
+    if (branching[v]) continue;
+    const std::size_t root = fans.find(c);
+    if (fan_of[v] == 3 * triangles)
+      fan_of[v] = root;
+    else if (fan_of[v] != root)
+      return false;
+  }
+  return true;
+}
+
 // Connected components (triangles sharing an edge), ordered by their first triangle. A vertex
 // where components touch (a non-manifold vertex, as where two cones meet tip to tip) is in each
 // of them, as one of their `pinches`. So is one where sheets of a component touch (its triangles
@@ -58,6 +79,8 @@ struct Component {
 // apart), and a sheet touching itself there stays non-manifold, remeshed as a whole mesh is. Every
 // vertex has a copy per fan, the junction's vertices (but those passed by) are pinches, and its
 // edges are each part's `branch_edges`.
+// Without `passed_by`, none where the whole is one part without pinches (most inputs): a copy of
+// it would only be freed again (igea.ply: 35 of the 107 ms that splitting took).
 std::vector<Component> split_components(const TriangleMesh& mesh,
                                         const std::vector<bool>* passed_by) {
   const std::size_t triangles = mesh.triangles.size();
@@ -96,6 +119,7 @@ std::vector<Component> split_components(const TriangleMesh& mesh,
               fans.unite(corner(uses[k].triangle(), v), corner(uses[l].triangle(), v));
     });
   }
+  if (!passed_by && one_part_without_pinches(mesh, sets, fans, branching)) return {};
   std::vector<Index> component_of_root(triangles, kNoIndex);
   std::vector<std::vector<Index>> triangles_of;  // per component, in input order
   for (Index t = 0; t < triangles; ++t) {
@@ -523,7 +547,8 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
   std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
   if (parts.empty() || (parts.size() == 1 && parts[0].pinches.empty())) {
     if (junction) return std::nullopt;  // one sheet: the whole, remeshed already
-    // The one part is a copy of the whole: freed first (igea.ply at 10k: 13 MB of a 205 MB peak).
+    // A lone part, where split_components made one, is a copy of the whole: freed first
+    // (igea.ply at 10k: 13 MB of a 205 MB peak).
     std::vector<Component>().swap(parts);
     return remesh_unit_topology_first(input, given).result;
   }
