@@ -100,6 +100,46 @@ TEST(ReadMesh, ObjContinuedLinesPolylinesAndTabsAreRead) {
   EXPECT_EQ(m.triangles[3], (Triangle{0, 1, 4}));
 }
 
+// Negative corner ids count back from the last vertex read so far; comments may end a line,
+// lines may end in CR LF, and a vertex's fields past x y z (w, a colour) are skipped.
+TEST(ReadMesh, ObjRelativeIdsTrailingCommentsAndExtraVertexFieldsAreRead) {
+  ReadReport report;
+  const TriangleMesh m = read_text("rel.obj",
+                                   "v 0 0 0 1\r\nv 1 0 0 0.5 0.5 0.5\r\nv 1 1 0\r\n"
+                                   "f -3 -2 -1 # the first\r\n"
+                                   "v +2 0 0\nf 2 4 -2\n",
+                                   report);
+  ASSERT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(m.vertices[3], (Vec3{2, 0, 0}));
+  ASSERT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.triangles[0], (Triangle{0, 1, 2}));
+  EXPECT_EQ(m.triangles[1], (Triangle{1, 3, 2}));
+}
+
+// What is not OBJ is named with its line (that of the statement's first line).
+TEST(ReadMesh, ObjProblemsNameTheirLine) {
+  TempDir dir;
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const auto error = [&](const std::string& name, const std::string& text) {
+    write_file(dir / name, text);
+    return read_error(dir / name);
+  };
+  std::string what = error("keyword.obj", vertices + "# a comment\nvx 1 2 3\nf 1 2 3\n");
+  EXPECT_NE(what.find("keyword.obj:5: unrecognized OBJ statement 'vx'"), std::string::npos) << what;
+  what = error("corner.obj", vertices + "f 1 2 \\\n  x\n");
+  EXPECT_NE(what.find("corner.obj:4: face 0: corner 'x' is no vertex id"), std::string::npos)
+      << what;
+  what = error("zero.obj", vertices + "f 0 1 2\n");
+  EXPECT_NE(what.find("zero.obj:4: face 0: corner '0' is no vertex id (they start at 1)"),
+            std::string::npos)
+      << what;
+  what = error("flat.obj", "v 0 0\n");
+  EXPECT_NE(what.find("flat.obj:1: vertex 0 has 2 coordinates (expected 3)"), std::string::npos)
+      << what;
+  what = error("word.obj", vertices + "v 0 zero 1\n");
+  EXPECT_NE(what.find("word.obj:4: vertex 3: 'zero' is not a number"), std::string::npos) << what;
+}
+
 TEST(ReadMesh, ObjOfPolylinesOnlyHasNoFaces) {
   TempDir dir;
   write_file(dir / "wire.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3\n");

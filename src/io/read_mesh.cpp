@@ -1,8 +1,7 @@
-// Reading goes through CGAL's polygon-soup readers (OFF and PLY through our own); this file adds
-// what they leave out: a precise one-line diagnosis of what is wrong with a file, validation, and
+// Reading goes through our own readers (OFF, OBJ, PLY) and CGAL's for STL; this file adds what
+// they leave out: a precise one-line diagnosis of what is wrong with a file, validation, and
 // triangulation.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/STL.h>
 
 #include <algorithm>
@@ -21,7 +20,7 @@
 
 #include "cvtmesh/io.hpp"
 #include "io/input_problem.hpp"
-#include "io/obj_statements.hpp"
+#include "io/read_obj.hpp"
 #include "io/read_off.hpp"
 #include "io/read_ply.hpp"
 
@@ -58,14 +57,10 @@ bool read_with_cgal(MeshFormat format, std::istream& in, PolygonSoup& soup, bool
   std::vector<Point> points;
   bool ok = false;
   switch (format) {
-    case MeshFormat::obj: {
-      std::istringstream statements(obj_for_cgal(in));
-      ok = CGAL::IO::read_OBJ(statements, points, soup.polygons, np);
-      break;
-    }
+    case MeshFormat::obj:
     case MeshFormat::off:
     case MeshFormat::ply:
-      break;  // read by read_off and read_ply, never by CGAL
+      break;  // read by read_obj, read_off and read_ply, never by CGAL
     case MeshFormat::stl: {
       std::vector<std::array<std::size_t, 3>> triangles;
       ok = CGAL::IO::read_STL(in, points, triangles, np);
@@ -274,8 +269,10 @@ TriangleMesh read_mesh(const std::filesystem::path& path, ReadReport* report) {
 
   PolygonSoup soup;
   bool parsed = false;
-  if (*format == MeshFormat::off || *format == MeshFormat::ply) {
-    soup = *format == MeshFormat::off ? read_off(path, in, size) : read_ply(path, in, size);
+  if (*format != MeshFormat::stl) {
+    soup = *format == MeshFormat::off   ? read_off(path, in, size)
+           : *format == MeshFormat::obj ? read_obj(path, in)
+                                        : read_ply(path, in, size);
     parsed = true;
   } else {
     try {

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "io/input_problem.hpp"
+#include "io/text_numbers.hpp"
 
 namespace cvtmesh {
 
@@ -134,16 +135,9 @@ class OffReader {
   }
 
   double number(const std::string& token, std::uint64_t v) {
-    std::string_view text = token;
-    if (text.starts_with('+')) text.remove_prefix(1);  // from_chars refuses a leading '+'
-    double value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    // Out of range: from_chars leaves the value alone; a huge magnitude is infinite, which the
-    // caller's check of finite coordinates names.
-    if (ec == std::errc::result_out_of_range) return std::strtod(token.c_str(), nullptr);
-    if (ec != std::errc() || end != text.data() + text.size())
-      fail_here("vertex " + std::to_string(v) + ": '" + token + "' is not a number");
-    return value;
+    const std::optional<double> value = text_double(token);
+    if (!value) fail_here("vertex " + std::to_string(v) + ": '" + token + "' is not a number");
+    return *value;
   }
 
   std::vector<std::size_t> face(std::uint64_t f, std::uint64_t vertices) {
@@ -161,11 +155,9 @@ class OffReader {
   }
 
   long long index(const std::string& token, std::uint64_t f) {
-    long long value = 0;
-    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec != std::errc() || end != token.data() + token.size())
-      fail_here("face " + std::to_string(f) + ": '" + token + "' is not an integer");
-    return value;
+    const std::optional<long long> value = text_integer(token);
+    if (!value) fail_here("face " + std::to_string(f) + ": '" + token + "' is not an integer");
+    return *value;
   }
 
   // Binary OFF: big-endian int32 counts, float32 vertex data, and per face an int32 corner
