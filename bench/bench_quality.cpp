@@ -66,7 +66,7 @@ void BM_Hausdorff(benchmark::State& state) {
 }
 BENCHMARK(BM_Hausdorff)->Arg(20'000)->Arg(200'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
-// Reading a binary PLY and an ASCII OFF of the level-7 sphere (327,680 triangles).
+// Reading a binary PLY, an ASCII OFF and an OBJ of the level-7 sphere (327,680 triangles).
 void BM_ReadMesh(benchmark::State& state, const char* extension) {
   testing::TempDir dir;
   const auto path = dir / (std::string("sphere.") + extension);
@@ -76,5 +76,6 @@ void BM_ReadMesh(benchmark::State& state, const char* extension) {
 }
 BENCHMARK_CAPTURE(BM_ReadMesh, ply, "ply")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ReadMesh, off, "off")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ReadMesh, obj, "obj")->Unit(benchmark::kMillisecond);
 
 }  // namespace
