@@ -51,12 +51,13 @@ bool one_part_without_pinches(const TriangleMesh& mesh, UnionFind& sets, UnionFi
   const std::size_t triangles = mesh.triangles.size();
   for (std::size_t t = 1; t < triangles; ++t)
     if (sets.find(t) != sets.find(0)) return false;
-  std::vector<std::size_t> fan_of(mesh.vertices.size(), triangles * 3);  // none yet
-  for (std::size_t c = 0; c < 3 * triangles; ++c) {
+  const std::size_t corners = 3 * triangles, none = corners;  // fans are named by corners
+  std::vector<std::size_t> fan_of(mesh.vertices.size(), none);
+  for (std::size_t c = 0; c < corners; ++c) {
     const Index v = mesh.triangles[c / 3][c % 3];
     if (branching[v]) continue;
     const std::size_t root = fans.find(c);
-    if (fan_of[v] == 3 * triangles)
+    if (fan_of[v] == none)
       fan_of[v] = root;
     else if (fan_of[v] != root)
       return false;
