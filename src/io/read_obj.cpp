@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "io/input_problem.hpp"
-#include "io/text_numbers.hpp"
+#include "io/text_tokens.hpp"
 
 namespace cvtmesh {
 
@@ -25,8 +25,6 @@ constexpr std::string_view kSkipped[] = {
     "bmat",     "con",      "curv",     "curv2",      "surf",      "parm",   "trim",     "hole",
     "scrv",     "sp",       "end",      "surf_1",     "q0_1",      "q1_1",   "curv2d_1", "surf_2",
     "q0_2",     "q1_2",     "curv2d_2", "bsp",        "bzp",       "cdc",    "cdp",      "res"};
-
-constexpr std::string_view kBlanks = " \t\r\v\f";
 
 class ObjReader {
  public:
@@ -63,22 +61,12 @@ class ObjReader {
         statement_ += ' ';
         continue;
       }
-      split();
+      split_words(statement_, words_);
       if (!words_.empty()) return true;
       statement_.clear();
     }
-    split();  // what a last line ending in a backslash began
+    split_words(statement_, words_);  // what a last line ending in a backslash began
     return !words_.empty();
-  }
-
-  void split() {
-    words_.clear();
-    const std::string_view s = statement_;
-    for (std::size_t at = s.find_first_not_of(kBlanks); at != std::string_view::npos;) {
-      const std::size_t end = std::min(s.find_first_of(kBlanks, at), s.size());
-      words_.push_back(s.substr(at, end - at));
-      at = s.find_first_not_of(kBlanks, end);
-    }
   }
 
   void vertex() {

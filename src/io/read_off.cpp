@@ -11,7 +11,7 @@
 #include <string_view>
 
 #include "io/input_problem.hpp"
-#include "io/text_numbers.hpp"
+#include "io/text_tokens.hpp"
 
 namespace cvtmesh {
 
@@ -92,15 +92,7 @@ class OffReader {
     while (std::getline(in_, line_)) {
       ++line_number_;
       if (const auto hash = line_.find('#'); hash != std::string::npos) line_.erase(hash);
-      tokens_.clear();
-      std::size_t at = 0;
-      while (true) {
-        at = line_.find_first_not_of(" \t\r\v\f", at);
-        if (at == std::string::npos) break;
-        const std::size_t end = std::min(line_.find_first_of(" \t\r\v\f", at), line_.size());
-        tokens_.emplace_back(line_, at, end - at);
-        at = end;
-      }
+      split_words(line_, tokens_);
       if (!tokens_.empty()) return true;
     }
     if (in_.bad()) fail("read error");
@@ -114,11 +106,11 @@ class OffReader {
       if (!next_line()) fail("truncated OFF data: the file ends before " + what);
       used_ = 0;
     }
-    const std::string& token = tokens_[used_++];
+    const std::string_view token = tokens_[used_++];
     std::uint64_t value = 0;
     const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
     if (ec != std::errc() || end != token.data() + token.size())
-      fail_here(what + " '" + token + "' is not a non-negative integer");
+      fail_here(what + " '" + std::string(token) + "' is not a non-negative integer");
     return value;
   }
 
@@ -133,16 +125,17 @@ class OffReader {
     return {x[0], x[1], x[2]};
   }
 
-  double number(const std::string& token, std::uint64_t v) {
+  double number(std::string_view token, std::uint64_t v) {
     const std::optional<double> value = text_double(token);
-    if (!value) fail_here("vertex " + std::to_string(v) + ": '" + token + "' is not a number");
+    if (!value)
+      fail_here("vertex " + std::to_string(v) + ": '" + std::string(token) + "' is not a number");
     return *value;
   }
 
   std::vector<std::size_t> face(std::uint64_t f, std::uint64_t vertices) {
     long long corners = index(tokens_[0], f);
     if (corners < 0 || static_cast<std::size_t>(corners) > tokens_.size() - 1)
-      fail_here("face " + std::to_string(f) + " announces " + tokens_[0] +
+      fail_here("face " + std::to_string(f) + " announces " + std::string(tokens_[0]) +
                 " corners, its line has " + std::to_string(tokens_.size() - 1) + " more numbers");
     std::vector<std::size_t> polygon(static_cast<std::size_t>(corners));
     for (std::size_t k = 0; k < polygon.size(); ++k) {
@@ -153,9 +146,10 @@ class OffReader {
     return polygon;
   }
 
-  long long index(const std::string& token, std::uint64_t f) {
+  long long index(std::string_view token, std::uint64_t f) {
     const std::optional<long long> value = text_integer(token);
-    if (!value) fail_here("face " + std::to_string(f) + ": '" + token + "' is not an integer");
+    if (!value)
+      fail_here("face " + std::to_string(f) + ": '" + std::string(token) + "' is not an integer");
     return *value;
   }
 
@@ -219,7 +213,7 @@ class OffReader {
     return static_cast<std::size_t>(std::min<std::uint64_t>(n, file_size_ / 4 + 1));
   }
 
-  std::string first_token() const { return tokens_.empty() ? "" : tokens_.front(); }
+  std::string first_token() const { return tokens_.empty() ? "" : std::string(tokens_.front()); }
 
   [[noreturn]] void truncated(std::uint64_t vertices, std::uint64_t faces, std::uint64_t read_v,
                               std::uint64_t read_f) const {
@@ -242,8 +236,8 @@ class OffReader {
   std::istream& in_;
   std::uintmax_t file_size_;
   std::string line_;
-  std::vector<std::string> tokens_;
-  std::size_t used_ = 0;  // tokens of the current line consumed by count()
+  std::vector<std::string_view> tokens_;  // of line_
+  std::size_t used_ = 0;                  // tokens of the current line consumed by count()
   std::size_t line_number_ = 0;
 };
 
