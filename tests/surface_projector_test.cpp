@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "geometry/surface_projector.hpp"
@@ -73,6 +74,17 @@ void expect_nearest(const TriangleMesh& mesh, const std::vector<Vec3>& points) {
     const Vec3 n = cross(b - a, c - a);
     EXPECT_NEAR(dot(foot.normal, (1 / norm(n)) * n), 1, 1e-12);
     EXPECT_NEAR(surface.squared_distance_to(p, foot.triangle), expected * expected, 1e-12);
+    // A triangle within a reach a little over the distance, at its squared distance; none
+    // within a little under it (for a point off the surface).
+    const double over = (1 + 1e-6) * expected + 1e-12;
+    const std::optional<SurfaceProjector::Near> near = surface.within(p, over * over);
+    ASSERT_TRUE(near.has_value());
+    EXPECT_LE(near->squared, over * over);
+    EXPECT_EQ(near->squared, surface.squared_distance_to(p, near->triangle));
+    const double under = (1 - 1e-6) * expected;
+    if (expected > 1e-9) {
+      EXPECT_FALSE(surface.within(p, under * under).has_value());
+    }
   }
 }
 

@@ -54,6 +54,23 @@ Vec3 nearest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   return a + (vb * denominator) * ab + (vc * denominator) * ac;
 }
 
+// The point of triangle t (unit normal n, zero if it has no area) nearest to q.
+Vec3 nearest_on(const Vec3& q, const Kernel::Triangle_3& t, const Vec3& n) {
+  return n != Vec3{} ? nearest_on_triangle(q, vec(t[0]), vec(t[1]), vec(t[2]))
+                     : vec(Kernel().construct_projected_point_3_object()(
+                           t, Kernel::Point_3(q.x, q.y, q.z)));
+}
+
+// The squared distance from q to a box.
+double squared_distance_to_box(const Vec3& q, const CGAL::Bbox_3& box) {
+  double squared = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double x = q[k], gap = std::max({box.min(k) - x, 0.0, x - box.max(k)});
+    squared += gap * gap;
+  }
+  return squared;
+}
+
 // A nearest-point search of the AABB tree (CGAL's traversal, our traits): CGAL's own traits
 // project the query onto every triangle whose box the search opens, with the kernel's general
 // construction. Here a triangle whose plane already lies farther than the nearest point found so
@@ -83,13 +100,7 @@ class NearestTraits {
   }
 
   bool do_intersect(const Kernel::Point_3&, const CGAL::AABB_node<AabbTraits>& node) const {
-    const CGAL::Bbox_3& box = node.bbox();
-    double squared = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double x = query_[k], gap = std::max({box.min(k) - x, 0.0, x - box.max(k)});
-      squared += gap * gap;
-    }
-    return squared < squared_;
+    return squared_distance_to_box(query_, node.bbox()) < squared_;
   }
 
   Vec3 nearest() const { return nearest_; }
@@ -100,14 +111,10 @@ class NearestTraits {
 
   // Takes triangle `id`'s nearest point if it is nearer than the nearest so far.
   void try_triangle(Primitive::Id id) {
-    const Kernel::Triangle_3& t = *id;
-    const Vec3 a = vec(t[0]);
     const Vec3& n = normals_[static_cast<std::size_t>(id - first_)];
-    const double height = dot(query_ - a, n);
+    const double height = dot(query_ - vec((*id)[0]), n);
     if (n != Vec3{} && height * height >= squared_) return;
-    const Vec3 p = n != Vec3{} ? nearest_on_triangle(query_, a, vec(t[1]), vec(t[2]))
-                               : vec(Kernel().construct_projected_point_3_object()(
-                                     t, Kernel::Point_3(query_.x, query_.y, query_.z)));
+    const Vec3 p = nearest_on(query_, *id, n);
     const double squared = squared_distance(query_, p);
     if (squared < squared_) {
       squared_ = squared;
@@ -122,6 +129,42 @@ class NearestTraits {
   const std::vector<Vec3>& normals_;
   Triangles::const_iterator first_;
 };
+// A search of the AABB tree for any triangle within a reach of the query: it opens only the
+// boxes within reach, and stops at the first such triangle. Distances as NearestTraits measures
+// them, so that a triangle found within reach holds the nearest point within reach too.
+class WithinTraits {
+ public:
+  WithinTraits(const Vec3& query, double squared_reach, const std::vector<Vec3>& normals,
+               Triangles::const_iterator first)
+      : query_(query), squared_reach_(squared_reach), normals_(normals), first_(first) {}
+
+  bool go_further() const { return !found_; }
+
+  void intersection(const Kernel::Point_3&, const Primitive& primitive) {
+    const Kernel::Triangle_3& t = *primitive.id();
+    const Vec3& n = normals_[static_cast<std::size_t>(primitive.id() - first_)];
+    const double height = dot(query_ - vec(t[0]), n);
+    if (found_ || height * height > squared_reach_) return;  // its plane is out of reach
+    const Vec3 p = nearest_on(query_, t, n);
+    const double squared = dot(query_ - p, query_ - p);
+    if (squared > squared_reach_) return;
+    found_ = SurfaceProjector::Near{squared, static_cast<std::size_t>(primitive.id() - first_)};
+  }
+
+  bool do_intersect(const Kernel::Point_3&, const CGAL::AABB_node<AabbTraits>& node) const {
+    return squared_distance_to_box(query_, node.bbox()) <= squared_reach_;
+  }
+
+  const std::optional<SurfaceProjector::Near>& found() const { return found_; }
+
+ private:
+  Vec3 query_;
+  double squared_reach_;
+  const std::vector<Vec3>& normals_;
+  Triangles::const_iterator first_;
+  std::optional<SurfaceProjector::Near> found_;
+};
+
 }  // namespace
 
 struct SurfaceProjector::Tree {
@@ -184,6 +227,13 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint
   return tree_->foot(search.nearest(), search.triangle());
 }
 
+std::optional<SurfaceProjector::Near> SurfaceProjector::within(const Vec3& p,
+                                                               double squared_reach) const {
+  WithinTraits search(p, squared_reach, tree_->normals, tree_->triangles.cbegin());
+  tree_->tree.traversal(Kernel::Point_3(p.x, p.y, p.z), search);
+  return search.found();
+}
+
 std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& direction,
                                               double reach) const {
   // No line (a zero direction), or nothing to search (an unused vertex's infinite reach).
@@ -209,7 +259,8 @@ std::size_t SurfaceProjector::surface_triangle(std::size_t triangle) const {
 }
 
 double SurfaceProjector::squared_distance_to(const Vec3& p, std::size_t triangle) const {
-  return CGAL::squared_distance(Kernel::Point_3(p.x, p.y, p.z), tree_->triangles[triangle]);
+  const Vec3 foot = nearest_on(p, tree_->triangles[triangle], tree_->normals[triangle]);
+  return dot(p - foot, p - foot);
 }
 
 }  // namespace cvtmesh

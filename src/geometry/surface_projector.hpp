@@ -23,6 +23,15 @@ class SurfaceProjector {
   // The same, starting the search from a foot found earlier for a point nearby (much faster
   // when the point has moved little, as seeds do between CVT iterations).
   Foot nearest(const Vec3& p, const Foot& hint) const;
+  // A triangle (as numbered inside the projector) within reach of p, with p's squared distance
+  // to it, if there is one: where the reach is small, far cheaper than `nearest`, as it opens
+  // only the boxes within reach and stops at the first such triangle. Given the same reach,
+  // there is one exactly where nearest(p) is within reach.
+  struct Near {
+    double squared;
+    std::size_t triangle;
+  };
+  std::optional<Near> within(const Vec3& p, double squared_reach) const;
   // The distance from p to the surface.
   double distance_to(const Vec3& p) const { return distance(p, nearest(p).point); }
   // The squared distance from p to one triangle (as numbered inside the projector): an upper

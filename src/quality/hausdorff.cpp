@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "cvtmesh/errors.hpp"
 #include "geometry/even_samples.hpp"
@@ -77,7 +78,16 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
       reach[v] = above;
       reach_triangle[v] = foot.triangle;
       if (k > begin && above <= max) continue;
-      if (k > begin) foot = to.nearest(p, foot);
+      // Nor does one with some triangle within the max: a search that opens only the boxes
+      // within it, and stops at the first.
+      if (k > begin) {
+        if (const auto near = to.within(p, max)) {
+          reach[v] = near->squared;
+          reach_triangle[v] = near->triangle;
+          continue;
+        }
+        foot = to.nearest(p, foot);
+      }
       const double squared = dot(foot.point - p, foot.point - p);
       reach[v] = squared;
       reach_triangle[v] = foot.triangle;
@@ -90,8 +100,10 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
   // distance cannot exceed the max needs no search: on a dense surface, nearly all. Its bounds:
   // an end's bound plus half the edge (a distance to a surface changes no faster than the point
   // moves), then the larger of the two ends' distances to the triangle an end is measured to (the
-  // distance to a triangle, a convex set, is convex along the edge). Those left are searched as
-  // the samples are.
+  // distance to a triangle, a convex set, is convex along the edge), then a triangle within the
+  // max (SurfaceProjector::within). Those left are searched as the samples are. (The bounds
+  // alone left every output edge open on corpus/bear.off at 5k, and 57% of the input's, 77k
+  // searches where the samples take 16k.)
   const std::size_t triangles = from.triangles.size();
   std::vector<std::uint8_t> open(3 * triangles);
   tbb::parallel_for(std::size_t{0}, triangles, [&](std::size_t t) {
@@ -106,13 +118,27 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
                    std::max(reach[w], to.squared_distance_to(p, reach_triangle[w]))) > max_sq;
     }
   });
-  std::vector<Vec3> midpoints;
+  // The bounds are the same from both triangles of an edge: each open edge is asked once, by its
+  // ends in order.
+  std::vector<std::uint64_t> edges;
   for (std::size_t t = 0; t < triangles; ++t)
     for (int k = 0; k < 3; ++k)
       if (open[3 * t + k]) {
-        const Triangle& f = from.triangles[t];
-        midpoints.push_back(0.5 * (from.vertices[f[k]] + from.vertices[f[(k + 1) % 3]]));
+        const Index v = from.triangles[t][k], w = from.triangles[t][(k + 1) % 3];
+        edges.push_back(std::uint64_t{std::min(v, w)} << 32 | std::max(v, w));
       }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const auto midpoint = [&](std::uint64_t e) {
+    return 0.5 * (from.vertices[e >> 32] + from.vertices[e & 0xffffffffu]);
+  };
+  std::vector<std::uint8_t> near(edges.size());
+  tbb::parallel_for(std::size_t{0}, edges.size(), [&](std::size_t i) {
+    near[i] = to.within(midpoint(edges[i]), max_sq).has_value();
+  });
+  std::vector<Vec3> midpoints;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    if (!near[i]) midpoints.push_back(midpoint(edges[i]));
   for (const double d : squared_distances(midpoints, to)) max_sq = std::max(max_sq, d);
   r.max = std::sqrt(max_sq);
   return r;
