@@ -21,8 +21,8 @@ constexpr std::size_t kChunk = 1024;
 
 // Each point's squared distance to the surface. Queries run in Morton order, in fixed chunks,
 // each starting from the previous one's foot: nearby points, so a short search. A point equal to
-// the one before it in that order (an edge's midpoint, listed by both its triangles) takes its
-// distance. The distances do not depend on the order: the same on any thread count.
+// the one before it in that order takes its distance. The distances do not depend on the order:
+// the same on any thread count.
 std::vector<double> squared_distances(const std::vector<Vec3>& points, const SurfaceProjector& to) {
   const std::vector<Index> order = spatial_order(points);
   std::vector<double> d2(points.size());
