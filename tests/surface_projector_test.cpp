@@ -84,6 +84,14 @@ void expect_nearest(const TriangleMesh& mesh, const std::vector<Vec3>& points) {
     const double under = (1 - 1e-6) * expected;
     if (expected > 1e-9) {
       EXPECT_FALSE(surface.within(p, under * under).has_value());
+      EXPECT_FALSE(surface.within(p, under * under, foot.triangle).has_value());
+    }
+    // A hint, near or far, changes whether one is found no more than the distance does.
+    for (const std::size_t hint : {foot.triangle, far_hint.triangle}) {
+      const std::optional<SurfaceProjector::Near> hinted = surface.within(p, over * over, hint);
+      ASSERT_TRUE(hinted.has_value());
+      EXPECT_LE(hinted->squared, over * over);
+      EXPECT_EQ(hinted->squared, surface.squared_distance_to(p, hinted->triangle));
     }
   }
 }

@@ -149,6 +149,7 @@ class ShapeImprover {
     // of this step).
     start_gap_.assign(mesh_.vertices.size(), kNotMeasured);
     failed_gap_at_.assign(mesh_.vertices.size(), kNoIndex);
+    near_surface_.assign(mesh_.triangles.size(), kNotFound);
     // A held saddle's gap is measured as a movable vertex's: it moves in the second pass.
     for (Index v = 0; v < mesh_.vertices.size(); ++v) {
       const Hold why = v < active_.size() && !active_[v] ? Hold::fixed : hold(v);
@@ -404,7 +405,7 @@ class ShapeImprover {
   bool gaps_within(Index v, double allowed) const {
     Index& first = failed_gap_at_[v];
     const auto fails = [&](Index t) {
-      if (gap_within(centroid(t), allowed)) return false;
+      if (gap_within(t, allowed)) return false;
       first = t;
       return true;
     };
@@ -443,6 +444,17 @@ class ShapeImprover {
   // corpus/ChineseDragon-10kv.off at 1k, nearest-point searches were half of this step.
   bool gap_within(const Vec3& p, double allowed) const {
     return surface_.within(p, allowed * allowed).has_value();
+  }
+  // The same for triangle t's centroid, asking first the surface triangle found within reach of
+  // it last: the places a search tries move t a little, and that triangle is mostly within reach
+  // again.
+  bool gap_within(Index t, double allowed) const {
+    std::size_t& last = near_surface_[t];
+    const std::optional<SurfaceProjector::Near> near =
+        last == kNotFound ? surface_.within(centroid(t), allowed * allowed)
+                          : surface_.within(centroid(t), allowed * allowed, last);
+    if (near) last = near->triangle;
+    return near.has_value();
   }
   Vec3 centroid(Index t) const {
     const auto [a, b, c] = mesh_.corners(t);
@@ -909,19 +921,25 @@ class ShapeImprover {
     const Vec3 w = cross(n, u);
     if (no_direction(u)) return at;
     double step = kFirstStep * size;
+    // Each step's projections start from the foot of the place it starts from: nearby.
+    std::optional<SurfaceProjector::Foot> from;
     for (int k = 0; k < kMaxSearchSteps && step >= kLastStep * size; ++k) {
-      std::optional<Vec3> next;
+      std::optional<SurfaceProjector::Foot> next;
       for (int d = 0; d < kDirections; ++d) {
         const double angle = 2 * M_PI * d / kDirections;
         const Vec3 in_plane = at + step * (std::cos(angle) * u + std::sin(angle) * w);
         if (!promising(in_plane)) continue;
-        const Vec3 q = surface_.nearest(in_plane).point;
-        if (better_at(q)) next = q;  // better_at raised the bar: the last one found is the best
+        if (!from) from = surface_.nearest(at);
+        const SurfaceProjector::Foot q = surface_.nearest(in_plane, *from);
+        // better_at raised the bar: the last one found is the best
+        if (better_at(q.point)) next = q;
       }
-      if (next)
-        at = *next;
-      else
+      if (next) {
+        at = next->point;
+        from = next;
+      } else {
         step /= 2;
+      }
     }
     return at;
   }
@@ -959,7 +977,10 @@ class ShapeImprover {
   const std::vector<Vec3> start_;             // the vertices where they were
   mutable std::vector<double> start_gap_;     // per vertex, start_gap once measured
   mutable std::vector<Index> failed_gap_at_;  // per vertex, the triangle gaps_within last failed at
-  std::vector<bool> gone_;                    // per triangle: taken away by a collapse
+  // Per triangle, the surface triangle gap_within last found within reach of it (kNotFound: none).
+  static constexpr std::size_t kNotFound = ~std::size_t{0};
+  mutable std::vector<std::size_t> near_surface_;
+  std::vector<bool> gone_;  // per triangle: taken away by a collapse
   std::size_t collapse_budget_;
   WorstShape floor_;  // the mesh's worst Q and θmin at the start, then where balance() began
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles

@@ -227,6 +227,13 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint
   return tree_->foot(search.nearest(), search.triangle());
 }
 
+std::optional<SurfaceProjector::Near> SurfaceProjector::within(const Vec3& p, double squared_reach,
+                                                               std::size_t hint) const {
+  if (const double squared = squared_distance_to(p, hint); squared <= squared_reach)
+    return Near{squared, hint};
+  return within(p, squared_reach);
+}
+
 std::optional<SurfaceProjector::Near> SurfaceProjector::within(const Vec3& p,
                                                                double squared_reach) const {
   WithinTraits search(p, squared_reach, tree_->normals, tree_->triangles.cbegin());

@@ -32,6 +32,9 @@ class SurfaceProjector {
     std::size_t triangle;
   };
   std::optional<Near> within(const Vec3& p, double squared_reach) const;
+  // The same, asking triangle `hint` first (as numbered inside the projector): no search where
+  // it is within reach, as a triangle found for a point nearby often is.
+  std::optional<Near> within(const Vec3& p, double squared_reach, std::size_t hint) const;
   // The distance from p to the surface.
   double distance_to(const Vec3& p) const { return distance(p, nearest(p).point); }
   // The squared distance from p to one triangle (as numbered inside the projector): an upper
