@@ -141,10 +141,11 @@ class WithinTraits {
   bool go_further() const { return !found_; }
 
   void intersection(const Kernel::Point_3&, const Primitive& primitive) {
+    if (found_) return;
     const Kernel::Triangle_3& t = *primitive.id();
     const Vec3& n = normals_[static_cast<std::size_t>(primitive.id() - first_)];
     const double height = dot(query_ - vec(t[0]), n);
-    if (found_ || height * height > squared_reach_) return;  // its plane is out of reach
+    if (height * height > squared_reach_) return;  // its plane is out of reach
     const Vec3 p = nearest_on(query_, t, n);
     const double squared = dot(query_ - p, query_ - p);
     if (squared > squared_reach_) return;

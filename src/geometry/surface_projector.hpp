@@ -26,7 +26,7 @@ class SurfaceProjector {
   // A triangle (as numbered inside the projector) within reach of p, with p's squared distance
   // to it, if there is one: where the reach is small, far cheaper than `nearest`, as it opens
   // only the boxes within reach and stops at the first such triangle. Given the same reach,
-  // there is one exactly where nearest(p) is within reach.
+  // there is one exactly where nearest(p) is within reach (up to rounding).
   struct Near {
     double squared;
     std::size_t triangle;
