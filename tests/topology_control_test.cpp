@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -33,6 +34,7 @@
 #include "support/shared_data.hpp"
 #include "voronoi/cell_pieces.hpp"
 #include "voronoi/piece_euler.hpp"
+#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 namespace {
@@ -226,12 +228,14 @@ TEST(CellPieces, AreOrderedPerSeedAndTheSameOnAnyThreadCount) {
       chunks[chunk].push_back({p.seed, p.triangle});
     }
   };
-  // The pieces, and each polygon's piece.
-  const auto pieces_on = [&](int threads) {
+  // The pieces, and each polygon's piece; with the surface's SideRings found by the collector,
+  // or given.
+  const SideRings rings(plates);
+  const auto pieces_on = [&](int threads, const SideRings* given) {
     const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                                     static_cast<std::size_t>(threads));
     const RestrictedVoronoiDiagram rvd(plates, seeds);
-    CellPieceCollector pieces(plates);
+    CellPieceCollector pieces(plates, given);
     PolygonList list;
     PolygonSink* sinks[] = {&pieces, &list};
     rvd.traverse(sinks);
@@ -243,9 +247,10 @@ TEST(CellPieces, AreOrderedPerSeedAndTheSameOnAnyThreadCount) {
       }
     return std::pair(pieces.pieces(), of_polygon);
   };
-  const auto [one, one_of_polygon] = pieces_on(1);
-  const auto [all, all_of_polygon] = pieces_on(4);
+  const auto [one, one_of_polygon] = pieces_on(1, nullptr);
+  const auto [all, all_of_polygon] = pieces_on(4, &rings);
   EXPECT_EQ(one_of_polygon, all_of_polygon);
+  EXPECT_EQ(pieces_on(4, &rings).second, all_of_polygon);  // the rings serve again
   ASSERT_EQ(one.size(), all.size());
   double area = 0;
   std::size_t split_cells = 0;
@@ -266,6 +271,29 @@ TEST(CellPieces, AreOrderedPerSeedAndTheSameOnAnyThreadCount) {
   }
   EXPECT_NEAR(area, surface_area(plates), 1e-12 * surface_area(plates));
   EXPECT_GT(split_cells, 10u);  // most cells reach both plates
+}
+
+// Around each edge, its triangles' sides in a ring: two for an inner edge, one at a boundary,
+// three where three sheets meet.
+TEST(SideRings, RingTheSidesOfEachEdge) {
+  TriangleMesh fan;
+  fan.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};
+  fan.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};  // three sheets on edge 0-1
+  const SideRings rings(fan);
+  const auto ring_of = [&](std::uint32_t side) {
+    std::vector<std::uint32_t> ring{side};
+    for (std::uint32_t s = rings.next(side); s != side; s = rings.next(s)) ring.push_back(s);
+    std::sort(ring.begin(), ring.end());
+    return ring;
+  };
+  EXPECT_EQ(ring_of(0), (std::vector<std::uint32_t>{0, 3, 6}));  // edge 0-1 of each
+  EXPECT_EQ(ring_of(1), (std::vector<std::uint32_t>{1}));        // 1-2: a boundary
+  const TriangleMesh sphere = icosphere(2);
+  const SideRings closed(sphere);
+  for (std::uint32_t side = 0; side < 3 * sphere.triangles.size(); ++side) {
+    EXPECT_NE(closed.next(side), side);
+    EXPECT_EQ(closed.next(closed.next(side)), side);
+  }
 }
 
 TEST(PieceEuler, EveryCellOfWellSpreadSeedsIsADisc) {

@@ -261,8 +261,11 @@ void local_lloyd(const TriangleMesh& patch, const std::vector<double>& density,
 
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings,
-                                TraversalMemory& memory, const std::vector<Vec3>* polished) {
+                                TraversalMemory& memory, const std::vector<Vec3>* polished,
+                                const SideRings* rings) {
   PolishedOutput out;
+  std::optional<SideRings> own_rings;  // one for all the rounds, where the caller keeps none
+  if (!rings) rings = &own_rings.emplace(surface);
   // Lloyd steps left these defects as they are; more of them move them little. (man.off at 5k:
   // each of topology control's 5 rounds polished the same 15-20 defects again, 10 steps a round,
   // a third of the run; 5.9 s → 4.7 s. On the corpus the outputs are as good on average.)
@@ -275,7 +278,7 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
   const TrianglePieces pieces(surface, edge_length_for(surface_area(surface), seeds.size()));
   for (int round = 0;; ++round) {
     const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
-    MultiNerveBuilder rdt(rvd);
+    MultiNerveBuilder rdt(rvd, rings);
     CellCoverage coverage(pieces);
     InterruptSink stop(objective.interrupt());
     PolygonSink* sinks[] = {&rdt, &coverage, &stop};

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cvt/cvt_objective.hpp"
+#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 
@@ -46,9 +47,11 @@ inline bool polished_at_once(const CvtObjective& objective) {
 // `surface` there left unchanged, and leaves its own for the next. `polished`, if given, holds the
 // seeds of an output polished before: a defect whose three seeds are all there as they were then
 // was polished then, and is not polished again (topology control's rounds change a few seeds).
+// `rings`: the surface's SideRings, where the caller keeps them (else found here).
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings,
                                 TraversalMemory& memory,
-                                const std::vector<Vec3>* polished = nullptr);
+                                const std::vector<Vec3>* polished = nullptr,
+                                const SideRings* rings = nullptr);
 
 }  // namespace cvtmesh

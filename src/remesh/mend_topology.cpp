@@ -253,7 +253,7 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
                                          : SplitCells::near_triangles;
     found = defect_seeds(m.surface, seeds, dual,
                          m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing,
-                         m.traversals);
+                         m.traversals, m.rings);
   }
   if (!a.missing.empty() && !out_of_time) {
     const std::size_t mended =
@@ -293,7 +293,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // worse triangles (man.off adaptive at 2k: 103 islands where 38, 137 seeds added where 53,
     // θmin 29.7° -> 18.4°; with seed 2, 34 seeds where 103, θmin 36.7° -> 22.8°).
     if (round == 0 && !polished_at_once(m.placement) && !a.topology_kept && polish.rounds > 0) {
-      output = extract_polished(m.surface, seeds, m.placement, polish, m.traversals);
+      output =
+          extract_polished(m.surface, seeds, m.placement, polish, m.traversals, nullptr, m.rings);
       report.polish_rounds += output.rounds;
       a = assess(m, special, output.mesh, seeds, constraints);
     }
@@ -325,7 +326,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       continue;
     }
     ++report.rounds;
-    output = extract_polished(m.surface, seeds, m.placement, polish, m.traversals, &polished);
+    output =
+        extract_polished(m.surface, seeds, m.placement, polish, m.traversals, &polished, m.rings);
     report.polish_rounds += output.rounds;
   }
   Round best = std::move(kept).take();

@@ -10,6 +10,7 @@
 #include "cvt/polish_defects.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
+#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 
@@ -27,6 +28,7 @@ struct MendContext {
   // since `start`.
   const std::function<void(const RemeshProgress&)>* progress = nullptr;
   std::chrono::steady_clock::time_point start{};
+  const SideRings* rings = nullptr;  // the surface's, if kept (else each traversal finds them)
 };
 
 struct MendReport {

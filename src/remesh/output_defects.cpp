@@ -98,11 +98,11 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
                          SplitCells split_cells, const SurfaceProjector* crossings,
-                         TraversalMemory& memory) {
+                         TraversalMemory& memory, const SideRings* rings) {
   const bool exhaustive = split_cells == SplitCells::at_centroids_everywhere;
   const bool everywhere = split_cells != SplitCells::near_triangles;
   const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
-  CellPieceCollector pieces(surface);
+  CellPieceCollector pieces(surface, rings);
   CrossingCollector collector(seeds, triangles);
   PieceEulerCollector euler(surface, seeds);
   std::vector<PolygonSink*> sinks{&pieces, &collector};

@@ -28,6 +28,7 @@
 #include "sizing/size_field.hpp"
 #include "system/elapsed.hpp"
 #include "system/memory_budget.hpp"
+#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 
@@ -175,9 +176,11 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   // RCVT runs, so that it fills the cores RCVT leaves idle.
   std::optional<CurveProjector> curves;
   std::optional<CurveSpacing> curve_spacing;
+  std::optional<SideRings> rings;  // for every extraction's cell pieces
   tbb::task_group ccvt_setup;
   ccvt_setup.run([&] {
     if (split) on_split.emplace(mesh);
+    rings.emplace(mesh);
     if (!features_first)
       detect_features_at(input, sorted.new_id, settings, spacing, result, features);
     curves.emplace(mesh, features);
@@ -289,9 +292,9 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
     // triangles that the last one left unchanged (issue 18: topology control works locally).
     // Freed before the finishing steps.
     TraversalMemory traversals;
-    PolishedOutput output =
-        extract_polished(mesh, seeds, placement,
-                         {polished_at_once(placement) ? settings.polish_rounds : 0}, traversals);
+    PolishedOutput output = extract_polished(
+        mesh, seeds, placement, {polished_at_once(placement) ? settings.polish_rounds : 0},
+        traversals, nullptr, &*rings);
     result.polish_rounds = output.rounds;
     result.defects_polished = output.defects;
     // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
@@ -300,7 +303,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                               *projector,     placement,
                               *curve_spacing, {settings.polish_rounds},
                               traversals,     &settings.progress,
-                              start};
+                              start,          &*rings};
     const auto mend_start = Clock::now();
     output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
                            mends);

@@ -6,10 +6,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <stdexcept>
 #include <tuple>
 
-#include "geometry/triangle_sides.hpp"
 #include "geometry/union_find.hpp"
 
 namespace cvtmesh {
@@ -38,27 +36,11 @@ void sort_each_seed(std::vector<T>& items, const std::vector<std::size_t>& offse
 }  // namespace
 
 void CellPieceCollector::begin(std::size_t chunks) {
-  // Triangle ids take 29 bits of a polygon record (a 2^29-triangle input would need some 350 GB).
-  if (surface_.triangles.size() >= (std::size_t{1} << 29))
-    throw std::length_error("too many triangles for the cell pieces");
-  polygon_chunks_.assign(chunks, {});
   // A cell meets an input edge in one segment (the cell is convex): its polygons on the
   // triangles around the edge all have that segment as a side, and are one piece. Each triangle
-  // side's next around its edge (a ring: two sides for an inner edge, one for a boundary edge,
-  // more where the input branches) leads to them. Found here, before any polygon is kept: the
-  // sorted sides take 24 bytes per side for a moment (igea.ply at 10k: 19 MB at the peak, in
-  // end()).
-  const std::vector<TriangleSide> sides = sorted_sides(surface_);
-  around_.assign(sides.size(), 0);
-  for (std::size_t i = 0, j = 0; i < sides.size(); i = j) {
-    for (j = i + 1; j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi;)
-      ++j;
-    for (std::size_t k = i; k < j; ++k) {
-      const TriangleSide& next = sides[k + 1 < j ? k + 1 : i];
-      around_[3 * sides[k].triangle + sides[k].side] =
-          static_cast<std::uint32_t>(3 * next.triangle + next.side);
-    }
-  }
+  // side's next around its edge leads to them (SideRings), found before any polygon is kept.
+  if (!rings_) own_rings_.emplace(surface_);
+  polygon_chunks_.assign(chunks, {});
 }
 
 void CellPieceCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
@@ -115,6 +97,7 @@ void CellPieceCollector::end() {
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::vector<std::size_t> rank(polygons.size(), kNone);
   std::vector<std::vector<CellPiece>> of_seed(seeds);
+  const SideRings& rings = rings_ ? *rings_ : *own_rings_;
   tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
     for (Index seed = range.begin(); seed != range.end(); ++seed) {
       const std::size_t begin = piece_offsets_[seed], end = piece_offsets_[seed + 1];
@@ -124,7 +107,7 @@ void CellPieceCollector::end() {
         for (std::uint32_t e = 0; e < 3; ++e) {
           if (!(polygon.sides & (1u << e))) continue;
           const std::uint32_t side = 3 * polygon.triangle + e;
-          for (std::uint32_t other = around_[side]; other != side; other = around_[other])
+          for (std::uint32_t other = rings.next(side); other != side; other = rings.next(other))
             if (const PieceOf* q = entry(seed, other / 3)) roots.unite(p, q->piece);
         }
       }
@@ -155,7 +138,7 @@ void CellPieceCollector::end() {
         piece_of_[i].piece = rank[roots.find(piece_of_[i].piece)];
     }
   });
-  std::vector<std::uint32_t>().swap(around_);
+  own_rings_.reset();
   // The pieces in seed order; each seed's ranks become indices in pieces_.
   std::vector<std::size_t> pieces_of(static_cast<std::size_t>(seeds) + 1, 0);
   for (Index seed = 0; seed < seeds; ++seed) pieces_of[seed + 1] = of_seed[seed].size();

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "cvtmesh/rvd.hpp"
+#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 
@@ -34,7 +36,10 @@ struct CellPiece {
 // largest first. Independent of the thread count (polygons are numbered in chunk order).
 class CellPieceCollector : public PolygonSink {
  public:
-  explicit CellPieceCollector(const TriangleMesh& surface) : surface_(surface) {}
+  // `rings`: the surface's SideRings, if the caller keeps them for several traversals; else
+  // each traversal finds its own.
+  explicit CellPieceCollector(const TriangleMesh& surface, const SideRings* rings = nullptr)
+      : surface_(surface), rings_(rings) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
@@ -55,8 +60,8 @@ class CellPieceCollector : public PolygonSink {
     Vec3 moment;  // area × centroid; for a polygon without area, a vertex of it instead
   };
   const TriangleMesh& surface_;
-  // Per triangle side (3 t + e), the next side around its input edge; from begin() to end().
-  std::vector<std::uint32_t> around_;
+  const SideRings* rings_;
+  std::optional<SideRings> own_rings_;  // where none were given: from begin() to end()
   std::vector<std::vector<Polygon>> polygon_chunks_;
   std::vector<CellPiece> pieces_;
   // Each polygon's piece (index in pieces_; while end() joins them, its polygon), grouped by seed

@@ -15,8 +15,9 @@ namespace cvtmesh {
 
 class MultiNerveBuilder : public PolygonSink {
  public:
-  explicit MultiNerveBuilder(const RestrictedVoronoiDiagram& rvd)
-      : rvd_(rvd), pieces_(rvd.surface()) {}
+  // `rings`: the surface's, as CellPieceCollector takes them.
+  explicit MultiNerveBuilder(const RestrictedVoronoiDiagram& rvd, const SideRings* rings = nullptr)
+      : rvd_(rvd), pieces_(rvd.surface(), rings) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void end() override;
