@@ -61,6 +61,13 @@ Vec3 nearest_on(const Vec3& q, const Kernel::Triangle_3& t, const Vec3& n) {
                            t, Kernel::Point_3(q.x, q.y, q.z)));
 }
 
+// The squared distance from q to triangle t (unit normal n, zero if it has no area), as the
+// searches measure it.
+double squared_distance_to_triangle(const Vec3& q, const Kernel::Triangle_3& t, const Vec3& n) {
+  const Vec3 foot = nearest_on(q, t, n);
+  return dot(q - foot, q - foot);
+}
+
 // The squared distance from q to a box.
 double squared_distance_to_box(const Vec3& q, const CGAL::Bbox_3& box) {
   double squared = 0;
@@ -146,8 +153,7 @@ class WithinTraits {
     const Vec3& n = normals_[static_cast<std::size_t>(primitive.id() - first_)];
     const double height = dot(query_ - vec(t[0]), n);
     if (height * height > squared_reach_) return;  // its plane is out of reach
-    const Vec3 p = nearest_on(query_, t, n);
-    const double squared = dot(query_ - p, query_ - p);
+    const double squared = squared_distance_to_triangle(query_, t, n);
     if (squared > squared_reach_) return;
     found_ = SurfaceProjector::Near{squared, static_cast<std::size_t>(primitive.id() - first_)};
   }
@@ -267,8 +273,7 @@ std::size_t SurfaceProjector::surface_triangle(std::size_t triangle) const {
 }
 
 double SurfaceProjector::squared_distance_to(const Vec3& p, std::size_t triangle) const {
-  const Vec3 foot = nearest_on(p, tree_->triangles[triangle], tree_->normals[triangle]);
-  return dot(p - foot, p - foot);
+  return squared_distance_to_triangle(p, tree_->triangles[triangle], tree_->normals[triangle]);
 }
 
 }  // namespace cvtmesh

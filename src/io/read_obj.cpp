@@ -57,10 +57,7 @@ class ObjReader {
       const bool continued = !line_.empty() && line_.back() == '\\';
       if (continued) line_.back() = ' ';
       statement_ += line_;
-      if (continued) {
-        statement_ += ' ';
-        continue;
-      }
+      if (continued) continue;
       split_words(statement_, words_);
       if (!words_.empty()) return true;
       statement_.clear();

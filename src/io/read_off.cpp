@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <charconv>
 #include <string>
 #include <string_view>
 
@@ -107,11 +106,9 @@ class OffReader {
       used_ = 0;
     }
     const std::string_view token = tokens_[used_++];
-    std::uint64_t value = 0;
-    const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec != std::errc() || end != token.data() + token.size())
-      fail_here(what + " '" + std::string(token) + "' is not a non-negative integer");
-    return value;
+    const std::optional<std::uint64_t> value = text_count(token);
+    if (!value) fail_here(what + " '" + std::string(token) + "' is not a non-negative integer");
+    return *value;
   }
 
   std::array<double, 3> vertex(std::uint64_t v, bool homogeneous) {

@@ -8,9 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
-#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <iterator>
 #include <optional>
@@ -19,6 +17,7 @@
 #include <string_view>
 
 #include "io/input_problem.hpp"
+#include "io/text_tokens.hpp"
 
 namespace cvtmesh {
 
@@ -133,12 +132,12 @@ class PlyReader {
   }
 
   void add_element(const std::vector<std::string>& words) {
-    std::uint64_t count = 0;
-    if (words.size() != 3 || !parse_integer(words[2], count))
-      fail_here("malformed PLY header: expected 'element <name> <count>'");
+    const std::optional<std::uint64_t> count =
+        words.size() == 3 ? text_count(words[2]) : std::nullopt;
+    if (!count) fail_here("malformed PLY header: expected 'element <name> <count>'");
     for (const Element& e : elements_)
       if (e.name == words[1]) fail_here("malformed PLY header: element '" + e.name + "' twice");
-    elements_.push_back({words[1], count, {}});
+    elements_.push_back({words[1], *count, {}});
   }
 
   void add_property(const std::vector<std::string>& words) {
@@ -325,17 +324,13 @@ class PlyReader {
     while (end < data_.size() && !std::isspace(static_cast<unsigned char>(data_[end]))) ++end;
     std::string_view token(data_.data() + at_, end - at_);
     at_ = end;
-    if (token.starts_with('+')) token.remove_prefix(1);  // from_chars refuses a leading '+'
-    double value = 0;
-    const auto [stop, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec == std::errc::result_out_of_range)  // a huge magnitude: infinite, refused later
-      return std::strtod(std::string(token).c_str(), nullptr);
+    // A huge magnitude reads as infinite, refused later.
+    const std::optional<double> value = text_double(token);
     const bool integer = type != Type::float32 && type != Type::float64;
-    if (ec != std::errc() || stop != token.data() + token.size() ||
-        (integer && value != std::floor(value)))
+    if (!value || (integer && *value != std::floor(*value)))
       fail_here("PLY element " + element.name + " item " + std::to_string(item) + ": '" +
                 std::string(token) + "' is not " + (integer ? "an integer" : "a number"));
-    return value;
+    return *value;
   }
 
   double binary_scalar(Type type, const Element& element, std::uint64_t item) {
@@ -370,11 +365,6 @@ class PlyReader {
         return as(double{});
     }
     return 0;
-  }
-
-  static bool parse_integer(const std::string& text, std::uint64_t& value) {
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && end == text.data() + text.size();
   }
 
   static std::string number_text(double value) {

@@ -1,10 +1,11 @@
-// Words and numbers of the text mesh formats (OFF, OBJ): lines split into views of themselves,
-// numbers parsed by std::from_chars (exact, locale-free, and several times faster than stream
-// extraction on large files).
+// Words and numbers of the text mesh formats (OFF, OBJ, PLY's header and text data): lines split
+// into views of themselves, numbers parsed by std::from_chars (exact, locale-free, and several
+// times faster than stream extraction on large files).
 #pragma once
 
 #include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -32,6 +33,14 @@ inline std::optional<double> text_double(std::string_view token) {
   double value = 0;
   const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec == std::errc::result_out_of_range) return std::strtod(std::string(token).c_str(), nullptr);
+  if (ec != std::errc() || end != token.data() + token.size()) return std::nullopt;
+  return value;
+}
+
+// The whole of `token` as a count (an integer without sign), or none.
+inline std::optional<std::uint64_t> text_count(std::string_view token) {
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec != std::errc() || end != token.data() + token.size()) return std::nullopt;
   return value;
 }

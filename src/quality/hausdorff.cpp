@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "cvtmesh/errors.hpp"
+#include "features/edge_uses.hpp"
 #include "geometry/even_samples.hpp"
 #include "geometry/spatial_order.hpp"
 #include "geometry/surface_projector.hpp"
@@ -120,17 +121,15 @@ OneSidedDistance one_sided(const TriangleMesh& from, const SurfaceProjector& to,
   });
   // The bounds are the same from both triangles of an edge: each open edge is asked once, by its
   // ends in order.
-  std::vector<std::uint64_t> edges;
+  std::vector<Edge> edges;
   for (std::size_t t = 0; t < triangles; ++t)
     for (int k = 0; k < 3; ++k)
-      if (open[3 * t + k]) {
-        const Index v = from.triangles[t][k], w = from.triangles[t][(k + 1) % 3];
-        edges.push_back(std::uint64_t{std::min(v, w)} << 32 | std::max(v, w));
-      }
+      if (open[3 * t + k])
+        edges.push_back(edge_of(from.triangles[t][k], from.triangles[t][(k + 1) % 3]));
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  const auto midpoint = [&](std::uint64_t e) {
-    return 0.5 * (from.vertices[e >> 32] + from.vertices[e & 0xffffffffu]);
+  const auto midpoint = [&](const Edge& e) {
+    return 0.5 * (from.vertices[e[0]] + from.vertices[e[1]]);
   };
   std::vector<std::uint8_t> near(edges.size());
   tbb::parallel_for(std::size_t{0}, edges.size(), [&](std::size_t i) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <stdexcept>
 #include <tuple>
 
 #include "geometry/union_find.hpp"
@@ -36,6 +37,9 @@ void sort_each_seed(std::vector<T>& items, const std::vector<std::size_t>& offse
 }  // namespace
 
 void CellPieceCollector::begin(std::size_t chunks) {
+  // Triangle ids take 29 bits of a polygon record (a 2^29-triangle input would need some 350 GB).
+  if (surface_.triangles.size() >= (std::size_t{1} << 29))
+    throw std::length_error("too many triangles for the cell pieces");
   // A cell meets an input edge in one segment (the cell is convex): its polygons on the
   // triangles around the edge all have that segment as a side, and are one piece. Each triangle
   // side's next around its edge leads to them (SideRings), found before any polygon is kept.

@@ -1,5 +1,6 @@
 #include "voronoi/side_rings.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include "geometry/triangle_sides.hpp"
@@ -7,8 +8,8 @@
 namespace cvtmesh {
 
 SideRings::SideRings(const TriangleMesh& surface) {
-  if (surface.triangles.size() >= (std::size_t{1} << 29))
-    throw std::length_error("too many triangles for the cell pieces");
+  if (surface.triangles.size() > std::numeric_limits<std::uint32_t>::max() / 3)
+    throw std::length_error("too many triangles for their side rings");
   // The sorted sides take 16 bytes per side for a moment (igea.ply: 13 MB).
   const std::vector<TriangleSide> sides = sorted_sides(surface);
   next_.assign(sides.size(), 0);

@@ -13,8 +13,7 @@ namespace cvtmesh {
 
 class SideRings {
  public:
-  // Throws std::length_error for 2^29 triangles or more (CellPieceCollector keeps a triangle id
-  // in 29 bits).
+  // Throws std::length_error for 2^32 / 3 triangles or more: side ids are 32 bits.
   explicit SideRings(const TriangleMesh& surface);
   // Side 3 t + e (edge e of triangle t joins its corners e and (e + 1) % 3): the next side around
   // its edge. The sides of an edge make a ring: two for an inner edge, one at a boundary, more
