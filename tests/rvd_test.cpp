@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -603,6 +604,85 @@ TEST(Rvd, ResultsDoNotDependOnThreadCount) {
   for (std::size_t s = 0; s < seeds.size(); ++s)
     ASSERT_EQ(one.first.moment[s], all.first.moment[s]);
   EXPECT_EQ(one.second.triangles, all.second.triangles);
+}
+
+// Every polygon with its chunk, whole, and when each chunk was said to be done: for replaying
+// a traversal to another sink in another order.
+class ChunkLog : public PolygonSink {
+ public:
+  struct Kept {
+    Index seed, triangle;
+    std::vector<RvdVertex> vertices;
+  };
+  void begin(std::size_t chunks) override {
+    chunks_.assign(chunks, {});
+    done_.assign(chunks, 0);
+  }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    if (done_[chunk]) late_ = true;
+    chunks_[chunk].push_back({p.seed, p.triangle, {p.vertices.begin(), p.vertices.end()}});
+  }
+  void chunk_done(std::size_t chunk) override { ++done_[chunk]; }
+  // Gives the polygons of the chunks in `order` to `sink`, each chunk done after its polygons
+  // when `report_done`.
+  void replay(PolygonSink& sink, const std::vector<std::size_t>& order, bool report_done) const {
+    sink.begin(chunks_.size());
+    for (const std::size_t chunk : order) {
+      for (const Kept& k : chunks_[chunk]) sink.polygon(chunk, {k.seed, k.triangle, k.vertices});
+      if (report_done) sink.chunk_done(chunk);
+    }
+    sink.end();
+  }
+  std::size_t chunks() const { return chunks_.size(); }
+  const std::vector<int>& done() const { return done_; }
+  bool polygon_after_done() const { return late_; }
+
+ private:
+  std::vector<std::vector<Kept>> chunks_;
+  std::vector<int> done_;  // per chunk: a chunk's calls all come on one thread
+  std::atomic<bool> late_ = false;
+};
+
+TEST(Rvd, SaysEachChunkDoneOnceAfterItsPolygons) {
+  const TriangleMesh m = torus(1, 0.4, 120, 48);
+  const RestrictedVoronoiDiagram rvd(m, sample_surface(m, 2000, 9));
+  ChunkLog log;
+  rvd.traverse(log);
+  ASSERT_GT(log.chunks(), 4u);
+  EXPECT_EQ(log.done(), std::vector<int>(log.chunks(), 1));
+  EXPECT_FALSE(log.polygon_after_done());
+}
+
+// CellIntegrator adds each chunk's sums as soon as the chunks before it are done, and frees it:
+// the sums must be those of the chunks added in order, whatever order they finish in, and
+// whether or not the chunks are said to be done before end().
+TEST(CellIntegrator, AddsTheChunksInOrderWhateverOrderTheyFinishIn) {
+  const TriangleMesh m = torus(1, 0.4, 120, 48);
+  const RestrictedVoronoiDiagram rvd(m, sample_surface(m, 2000, 9));
+  ChunkLog log;
+  CellIntegrator traversed(rvd);
+  PolygonSink* sinks[] = {&log, &traversed};
+  rvd.traverse(sinks);
+  std::vector<std::size_t> forward(log.chunks()), backward, shuffled;
+  std::iota(forward.begin(), forward.end(), std::size_t{0});
+  backward.assign(forward.rbegin(), forward.rend());
+  shuffled = forward;
+  CounterRng random(3, 0);
+  for (std::size_t i = shuffled.size(); i > 1; --i)
+    std::swap(shuffled[i - 1], shuffled[static_cast<std::size_t>(random.uniform() * i) % i]);
+  for (const auto& order : {forward, backward, shuffled}) {
+    for (const bool report_done : {true, false}) {
+      CellIntegrator replayed(rvd);
+      log.replay(replayed, order, report_done);
+      const CellIntegrals &a = traversed.result(), &b = replayed.result();
+      EXPECT_EQ(a.mass, b.mass);
+      EXPECT_EQ(a.energy, b.energy);
+      EXPECT_EQ(a.total_energy, b.total_energy);
+      EXPECT_EQ(a.total_mass, b.total_mass);
+      ASSERT_EQ(a.moment.size(), b.moment.size());
+      for (std::size_t s = 0; s < a.moment.size(); ++s) ASSERT_EQ(a.moment[s], b.moment[s]) << s;
+    }
+  }
 }
 
 }  // namespace

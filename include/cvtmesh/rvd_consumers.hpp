@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -34,6 +35,7 @@ class CellIntegrator : public PolygonSink {
                  std::span<const Vec3> unit_normals = {});
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
+  void chunk_done(std::size_t chunk) override;
   void end() override;
   const CellIntegrals& result() const { return result_; }
 
@@ -43,10 +45,15 @@ class CellIntegrator : public PolygonSink {
     double mass, energy;
     Vec3 moment;
   };
+  // Adds the done chunks that follow those added already, in order, and frees them.
+  void add_done_chunks();
   const RestrictedVoronoiDiagram& rvd_;
   std::span<const double> density_;
   std::span<const Vec3> unit_normals_;
   std::vector<std::vector<Contribution>> chunks_;
+  std::vector<char> done_;  // per chunk, all its polygons arrived
+  std::size_t added_ = 0;   // chunks [0, added_) are in result_
+  std::mutex adding_;
   CellIntegrals result_;
 };
 

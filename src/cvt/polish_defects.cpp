@@ -36,20 +36,18 @@ class CellCoverage : public PolygonSink {
     if (!pieces_.cut(p.triangle)) return;
     ball_chunks_[chunk].push_back({p.triangle, p.seed, bounding_ball(p.vertices)});
   }
-  void end() override {
-    pairs_.clear();
-    for (const auto& c : chunks_) pairs_.insert(pairs_.end(), c.begin(), c.end());
-    chunks_.clear();
-    balls_.clear();
-    for (const auto& c : ball_chunks_) balls_.insert(balls_.end(), c.begin(), c.end());
-    ball_chunks_.clear();
+  // Each chunk is kept as it is, sized exactly: joined into one array, they were held twice.
+  void chunk_done(std::size_t chunk) override {
+    chunks_[chunk].shrink_to_fit();
+    ball_chunks_[chunk].shrink_to_fit();
   }
   // The triangles covered by any of `cells` (sorted), sorted and without repeats. One scan, only
   // in rounds that found defects: most extractions never ask.
   std::vector<Index> triangles_of(const std::vector<Index>& cells) const {
     std::vector<Index> out;
-    for (const auto& [seed, triangle] : pairs_)
-      if (std::binary_search(cells.begin(), cells.end(), seed)) out.push_back(triangle);
+    for (const auto& chunk : chunks_)
+      for (const auto& [seed, triangle] : chunk)
+        if (std::binary_search(cells.begin(), cells.end(), seed)) out.push_back(triangle);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -57,8 +55,10 @@ class CellCoverage : public PolygonSink {
   // Per cut triangle of `cells` (sorted), the balls around their polygons there.
   std::map<Index, std::vector<Ball>> balls_of(const std::vector<Index>& cells) const {
     std::map<Index, std::vector<Ball>> out;
-    for (const BallOn& b : balls_)
-      if (std::binary_search(cells.begin(), cells.end(), b.seed)) out[b.triangle].push_back(b.ball);
+    for (const auto& chunk : ball_chunks_)
+      for (const BallOn& b : chunk)
+        if (std::binary_search(cells.begin(), cells.end(), b.seed))
+          out[b.triangle].push_back(b.ball);
     return out;
   }
 
@@ -69,9 +69,7 @@ class CellCoverage : public PolygonSink {
   };
   const TrianglePieces& pieces_;
   std::vector<std::vector<std::pair<Index, Index>>> chunks_;
-  std::vector<std::pair<Index, Index>> pairs_;
   std::vector<std::vector<BallOn>> ball_chunks_;
-  std::vector<BallOn> balls_;
 };
 
 // Whether the triangle has a defective shape.

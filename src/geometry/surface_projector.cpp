@@ -1,14 +1,19 @@
 #include "geometry/surface_projector.hpp"
 
+#include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <boost/iterator/counting_iterator.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "geometry/point_tree.hpp"
@@ -21,14 +26,53 @@ namespace {
 // box-sphere tests of an exact-predicates kernel only decide which boxes the search opens, a
 // rounding's difference at most (spool.off at 5k: the whole remesh 8% faster).
 using Kernel = CGAL::Simple_cartesian<double>;
-using Triangles = std::vector<Kernel::Triangle_3>;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
-using AabbTraits = CGAL::AABB_traits<Kernel, Primitive>;
-using AabbTree = CGAL::AABB_tree<AabbTraits>;
 
 Vec3 vec(const Kernel::Point_3& p) {
   return {p.x(), p.y(), p.z()};
 }
+
+Kernel::Point_3 point(const Vec3& p) {
+  return {p.x, p.y, p.z};
+}
+
+// The projector's triangles as corner ids into a copy of the surface's points: a third of the
+// memory of CGAL triangles (igea.ply: 6 MB against 19 MB), the tree's primitives being ids alone.
+struct TriangleStore {
+  std::vector<Vec3> points;
+  std::vector<Triangle> corners;
+
+  Vec3 corner(std::uint32_t triangle, int k) const { return points[corners[triangle][k]]; }
+};
+
+// What CGAL's tree reads of a primitive, from its id: its triangle, and its reference point (its
+// first corner, as CGAL's own triangle primitive has it).
+Kernel::Triangle_3 triangle_of(const TriangleStore& store, std::uint32_t t) {
+  return {point(store.corner(t, 0)), point(store.corner(t, 1)), point(store.corner(t, 2))};
+}
+
+Kernel::Point_3 first_corner_of(const TriangleStore& store, std::uint32_t t) {
+  return point(store.corner(t, 0));
+}
+
+// A readable property map from a triangle's id to what `make` builds of it.
+template <class Value, Value (*make)(const TriangleStore&, std::uint32_t)>
+struct StoreMap {
+  using key_type = std::uint32_t;
+  using value_type = Value;
+  using reference = Value;
+  using category = boost::readable_property_map_tag;
+  const TriangleStore* store = nullptr;
+
+  friend Value get(const StoreMap& m, key_type t) { return make(*m.store, t); }
+};
+
+using TriangleOf = StoreMap<Kernel::Triangle_3, &triangle_of>;
+using FirstCornerOf = StoreMap<Kernel::Point_3, &first_corner_of>;
+
+using Primitive =
+    CGAL::AABB_primitive<std::uint32_t, TriangleOf, FirstCornerOf, CGAL::Tag_true, CGAL::Tag_false>;
+using AabbTraits = CGAL::AABB_traits<Kernel, Primitive>;
+using AabbTree = CGAL::AABB_tree<AabbTraits>;
 
 // The point of triangle abc nearest to p, by the region of the triangle's plane that p projects
 // into (vertex, edge or face; Ericson, Real-Time Collision Detection §5.1.5). abc must have an
@@ -55,16 +99,18 @@ Vec3 nearest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
 }
 
 // The point of triangle t (unit normal n, zero if it has no area) nearest to q.
-Vec3 nearest_on(const Vec3& q, const Kernel::Triangle_3& t, const Vec3& n) {
-  return n != Vec3{} ? nearest_on_triangle(q, vec(t[0]), vec(t[1]), vec(t[2]))
+Vec3 nearest_on(const Vec3& q, const TriangleStore& store, std::uint32_t t, const Vec3& n) {
+  const Vec3 a = store.corner(t, 0), b = store.corner(t, 1), c = store.corner(t, 2);
+  return n != Vec3{} ? nearest_on_triangle(q, a, b, c)
                      : vec(Kernel().construct_projected_point_3_object()(
-                           t, Kernel::Point_3(q.x, q.y, q.z)));
+                           Kernel::Triangle_3(point(a), point(b), point(c)), point(q)));
 }
 
 // The squared distance from q to triangle t (unit normal n, zero if it has no area), as the
 // searches measure it.
-double squared_distance_to_triangle(const Vec3& q, const Kernel::Triangle_3& t, const Vec3& n) {
-  const Vec3 foot = nearest_on(q, t, n);
+double squared_distance_to_triangle(const Vec3& q, const TriangleStore& store, std::uint32_t t,
+                                    const Vec3& n) {
+  const Vec3 foot = nearest_on(q, store, t, n);
   return dot(q - foot, q - foot);
 }
 
@@ -89,14 +135,14 @@ class NearestTraits {
   // The search starts from the hint's triangle: its nearest point to the query, where the query
   // has moved from the hint's point, bounds the search far tighter than the hint's point does (a
   // seed that moved along the surface between two CVT steps is still about on its triangle).
-  NearestTraits(const Vec3& query, const Vec3& hint, Primitive::Id hint_triangle,
-                const std::vector<Vec3>& normals, Triangles::const_iterator first)
+  NearestTraits(const Vec3& query, const Vec3& hint, std::uint32_t hint_triangle,
+                const TriangleStore& store, const std::vector<Vec3>& normals)
       : query_(query),
         nearest_(hint),
         triangle_(hint_triangle),
         squared_(squared_distance(query, hint)),
-        normals_(normals),
-        first_(first) {
+        store_(store),
+        normals_(normals) {
     try_triangle(hint_triangle);
   }
 
@@ -111,17 +157,17 @@ class NearestTraits {
   }
 
   Vec3 nearest() const { return nearest_; }
-  Primitive::Id triangle() const { return triangle_; }
+  std::uint32_t triangle() const { return triangle_; }
 
  private:
   static double squared_distance(const Vec3& a, const Vec3& b) { return dot(a - b, a - b); }
 
   // Takes triangle `id`'s nearest point if it is nearer than the nearest so far.
-  void try_triangle(Primitive::Id id) {
-    const Vec3& n = normals_[static_cast<std::size_t>(id - first_)];
-    const double height = dot(query_ - vec((*id)[0]), n);
+  void try_triangle(std::uint32_t id) {
+    const Vec3& n = normals_[id];
+    const double height = dot(query_ - store_.corner(id, 0), n);
     if (n != Vec3{} && height * height >= squared_) return;
-    const Vec3 p = nearest_on(query_, *id, n);
+    const Vec3 p = nearest_on(query_, store_, id, n);
     const double squared = squared_distance(query_, p);
     if (squared < squared_) {
       squared_ = squared;
@@ -131,31 +177,31 @@ class NearestTraits {
   }
 
   Vec3 query_, nearest_;
-  Primitive::Id triangle_;
+  std::uint32_t triangle_;
   double squared_;
+  const TriangleStore& store_;
   const std::vector<Vec3>& normals_;
-  Triangles::const_iterator first_;
 };
 // A search of the AABB tree for any triangle within a reach of the query: it opens only the
 // boxes within reach, and stops at the first such triangle. Distances as NearestTraits measures
 // them, so that a triangle found within reach holds the nearest point within reach too.
 class WithinTraits {
  public:
-  WithinTraits(const Vec3& query, double squared_reach, const std::vector<Vec3>& normals,
-               Triangles::const_iterator first)
-      : query_(query), squared_reach_(squared_reach), normals_(normals), first_(first) {}
+  WithinTraits(const Vec3& query, double squared_reach, const TriangleStore& store,
+               const std::vector<Vec3>& normals)
+      : query_(query), squared_reach_(squared_reach), store_(store), normals_(normals) {}
 
   bool go_further() const { return !found_; }
 
   void intersection(const Kernel::Point_3&, const Primitive& primitive) {
     if (found_) return;
-    const Kernel::Triangle_3& t = *primitive.id();
-    const Vec3& n = normals_[static_cast<std::size_t>(primitive.id() - first_)];
-    const double height = dot(query_ - vec(t[0]), n);
+    const std::uint32_t t = primitive.id();
+    const Vec3& n = normals_[t];
+    const double height = dot(query_ - store_.corner(t, 0), n);
     if (height * height > squared_reach_) return;  // its plane is out of reach
-    const double squared = squared_distance_to_triangle(query_, t, n);
+    const double squared = squared_distance_to_triangle(query_, store_, t, n);
     if (squared > squared_reach_) return;
-    found_ = SurfaceProjector::Near{squared, static_cast<std::size_t>(primitive.id() - first_)};
+    found_ = SurfaceProjector::Near{squared, t};
   }
 
   bool do_intersect(const Kernel::Point_3&, const CGAL::AABB_node<AabbTraits>& node) const {
@@ -167,54 +213,60 @@ class WithinTraits {
  private:
   Vec3 query_;
   double squared_reach_;
+  const TriangleStore& store_;
   const std::vector<Vec3>& normals_;
-  Triangles::const_iterator first_;
   std::optional<SurfaceProjector::Near> found_;
 };
 
 }  // namespace
 
 struct SurfaceProjector::Tree {
-  Triangles triangles;
+  TriangleStore store;
   std::vector<Vec3> normals;
-  std::vector<std::size_t> surface_id;  // per triangle, its id in the surface
+  std::vector<Index> surface_id;  // per triangle, its id in the surface
   AabbTree tree;
-  std::vector<Vec3> centroids;  // of `triangles`: the start of a query with no hint
+  std::vector<Vec3> centroids;  // of the triangles: the start of a query with no hint
   std::optional<PointTree> nearest_centroid;
 
-  Foot foot(const Vec3& point, Triangles::const_iterator triangle) const {
-    const auto index = static_cast<std::size_t>(triangle - triangles.begin());
-    return {point, normals[index], index};
+  Foot foot(const Vec3& point, std::uint32_t triangle) const {
+    return {point, normals[triangle], triangle};
   }
 };
 
 SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
+  if (surface.triangles.size() > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("too many triangles for the surface projector");
+  TriangleStore& store = tree_->store;
+  store.points = surface.vertices;
   // Degenerate triangles hold no nearest point that a neighbour does not hold too; they are
   // kept only when nothing else is left, with a zero normal.
-  tree_->triangles.reserve(surface.triangles.size());
-  tree_->normals.reserve(surface.triangles.size());
   for (const bool keep_degenerate : {false, true}) {
     for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
       const auto [a, b, c] = surface.corners(t);
       const Vec3 n = cross(b - a, c - a);
-      const double length = norm(n);
-      if (length == 0 && !keep_degenerate) continue;
-      tree_->triangles.emplace_back(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z),
-                                    Kernel::Point_3(c.x, c.y, c.z));
+      if (norm(n) == 0 && !keep_degenerate) continue;
+      store.corners.push_back(surface.triangles[t]);
       tree_->normals.push_back(unit_or_zero(n));
-      tree_->surface_id.push_back(t);
+      tree_->surface_id.push_back(static_cast<Index>(t));
     }
-    if (!tree_->triangles.empty()) break;
+    if (!store.corners.empty()) break;
   }
-  tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
+  store.corners.shrink_to_fit();
+  tree_->normals.shrink_to_fit();
+  tree_->surface_id.shrink_to_fit();
+  const auto count = static_cast<std::uint32_t>(store.corners.size());
+  tree_->tree.insert(boost::counting_iterator<std::uint32_t>(0),
+                     boost::counting_iterator<std::uint32_t>(count), TriangleOf{&store},
+                     FirstCornerOf{&store});
   tree_->tree.build();
   // A query without a hint starts from the nearest triangle centroid: a kd-tree over them is
   // faster to build than CGAL's own (accelerate_distance_queries), as fast to query.
   tree_->tree.do_not_accelerate_distance_queries();
-  tree_->centroids.reserve(tree_->triangles.size());
-  for (const auto& t : tree_->triangles) {
-    const auto c = CGAL::centroid(t);
-    tree_->centroids.push_back({c.x(), c.y(), c.z()});
+  tree_->centroids.reserve(count);
+  for (std::uint32_t t = 0; t < count; ++t) {
+    const Vec3 a = store.corner(t, 0), b = store.corner(t, 1), c = store.corner(t, 2);
+    tree_->centroids.push_back(
+        {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3});
   }
   tree_->nearest_centroid.emplace(tree_->centroids);
 }
@@ -227,10 +279,9 @@ SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p) const {
 }
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint) const {
-  const auto first = tree_->triangles.cbegin();
-  NearestTraits search(p, hint.point, first + static_cast<std::ptrdiff_t>(hint.triangle),
-                       tree_->normals, first);
-  tree_->tree.traversal(Kernel::Point_3(p.x, p.y, p.z), search);
+  NearestTraits search(p, hint.point, static_cast<std::uint32_t>(hint.triangle), tree_->store,
+                       tree_->normals);
+  tree_->tree.traversal(point(p), search);
   return tree_->foot(search.nearest(), search.triangle());
 }
 
@@ -243,8 +294,8 @@ std::optional<SurfaceProjector::Near> SurfaceProjector::within(const Vec3& p, do
 
 std::optional<SurfaceProjector::Near> SurfaceProjector::within(const Vec3& p,
                                                                double squared_reach) const {
-  WithinTraits search(p, squared_reach, tree_->normals, tree_->triangles.cbegin());
-  tree_->tree.traversal(Kernel::Point_3(p.x, p.y, p.z), search);
+  WithinTraits search(p, squared_reach, tree_->store, tree_->normals);
+  tree_->tree.traversal(point(p), search);
   return search.found();
 }
 
@@ -253,7 +304,7 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
   // No line (a zero direction), or nothing to search (an unused vertex's infinite reach).
   if (!(reach > 0) || !std::isfinite(reach) || direction == Vec3{}) return std::nullopt;
   const Vec3 a = p - reach * direction, b = p + reach * direction;
-  const Kernel::Segment_3 segment(Kernel::Point_3(a.x, a.y, a.z), Kernel::Point_3(b.x, b.y, b.z));
+  const Kernel::Segment_3 segment(point(a), point(b));
   using Hit = AabbTree::Intersection_and_primitive_id<Kernel::Segment_3>::Type;
   std::optional<double> nearest;
   // Each crossing as the tree finds it, in its order (nothing stored: the fit asks for every
@@ -273,7 +324,8 @@ std::size_t SurfaceProjector::surface_triangle(std::size_t triangle) const {
 }
 
 double SurfaceProjector::squared_distance_to(const Vec3& p, std::size_t triangle) const {
-  return squared_distance_to_triangle(p, tree_->triangles[triangle], tree_->normals[triangle]);
+  return squared_distance_to_triangle(p, tree_->store, static_cast<std::uint32_t>(triangle),
+                                      tree_->normals[triangle]);
 }
 
 }  // namespace cvtmesh

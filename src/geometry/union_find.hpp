@@ -2,7 +2,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -10,8 +13,10 @@ namespace cvtmesh {
 
 class UnionFind {
  public:
-  explicit UnionFind(std::size_t n) : parent_(n), size_(n, 1) {
-    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+  // At most 2^32 - 1 elements, stored in 32 bits: half the memory of size_t ids (cell pieces
+  // hold one per RVD polygon).
+  explicit UnionFind(std::size_t n) : parent_(checked(n)), size_(n, 1) {
+    std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
   }
   std::size_t find(std::size_t x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
@@ -21,12 +26,17 @@ class UnionFind {
     a = find(a), b = find(b);
     if (a == b) return;
     if (size_[a] < size_[b]) std::swap(a, b);
-    parent_[b] = a;
+    parent_[b] = static_cast<std::uint32_t>(a);
     size_[a] += size_[b];
   }
 
  private:
-  std::vector<std::size_t> parent_, size_;
+  static std::size_t checked(std::size_t n) {
+    if (n > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("too many elements for a union-find");
+    return n;
+  }
+  std::vector<std::uint32_t> parent_, size_;
 };
 
 }  // namespace cvtmesh

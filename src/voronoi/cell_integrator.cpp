@@ -106,6 +106,13 @@ CellIntegrator::CellIntegrator(const RestrictedVoronoiDiagram& rvd, std::span<co
 
 void CellIntegrator::begin(std::size_t chunks) {
   chunks_.assign(chunks, {});
+  done_.assign(chunks, 0);
+  added_ = 0;
+  const std::size_t n = rvd_.seeds().size();
+  result_ = {};
+  result_.mass.assign(n, 0);
+  result_.energy.assign(n, 0);
+  result_.moment.assign(n, {});
 }
 
 void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
@@ -149,25 +156,33 @@ void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
   chunks_[chunk].push_back(c);
 }
 
-void CellIntegrator::end() {
-  const std::size_t n = rvd_.seeds().size();
-  result_ = {};
-  result_.mass.assign(n, 0);
-  result_.energy.assign(n, 0);
-  result_.moment.assign(n, {});
+void CellIntegrator::chunk_done(std::size_t chunk) {
+  const std::lock_guard lock(adding_);
+  done_[chunk] = 1;
+  add_done_chunks();
+}
+
+void CellIntegrator::add_done_chunks() {
   // Chunks in order, each in its own order: the same sums for any thread count.
-  for (const auto& contributions : chunks_) {
-    for (const Contribution& c : contributions) {
+  for (; added_ < chunks_.size() && done_[added_]; ++added_) {
+    for (const Contribution& c : chunks_[added_]) {
       result_.mass[c.seed] += c.mass;
       result_.energy[c.seed] += c.energy;
       result_.moment[c.seed] += c.moment;
     }
+    std::vector<Contribution>().swap(chunks_[added_]);
   }
-  for (std::size_t s = 0; s < n; ++s) {
+}
+
+void CellIntegrator::end() {
+  std::fill(done_.begin(), done_.end(), 1);  // a driver need not report chunks done
+  add_done_chunks();
+  for (std::size_t s = 0; s < result_.mass.size(); ++s) {
     result_.total_mass += result_.mass[s];
     result_.total_energy += result_.energy[s];
   }
   chunks_.clear();
+  done_.clear();
 }
 
 }  // namespace cvtmesh

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
@@ -61,32 +62,39 @@ void CellPieceCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
   polygon_chunks_[chunk].push_back(out);
 }
 
+void CellPieceCollector::chunk_done(std::size_t chunk) {
+  // Sized exactly once complete: vectors grown by doubling held half as much again as their
+  // polygons (igea.ply at 10k seeds: 25 MB for 17 MB of polygons).
+  polygon_chunks_[chunk].shrink_to_fit();
+}
+
 void CellPieceCollector::end() {
-  // The chunks are joined into one array, sized exactly, and each chunk is freed as soon as it
-  // is copied: at the peak, extraction held every polygon up to three times (issue 22: 264 MB
-  // of a 490 MB run on a 500k-triangle torus).
+  // The polygons stay in their chunks, numbered in chunk order through an array of pointers:
+  // joining them into one array held every polygon twice at the peak (issue 22: extraction was
+  // 264 MB of a 490 MB run on a 500k-triangle torus).
   std::size_t polygon_count = 0;
   Index seeds = 0;
-  for (const auto& chunk : polygon_chunks_) {
+  for (auto& chunk : polygon_chunks_) {
+    chunk.shrink_to_fit();  // where the traversal did not say the chunk was done
     polygon_count += chunk.size();
     for (const Polygon& polygon : chunk) seeds = std::max(seeds, polygon.seed + 1);
   }
-  std::vector<Polygon> polygons;
+  // Polygon and piece ids take 32 bits (2^32 polygons would need some 170 GB).
+  if (polygon_count > std::numeric_limits<Index>::max())
+    throw std::length_error("too many polygons for the cell pieces");
+  std::vector<const Polygon*> polygons;
   polygons.reserve(polygon_count);
-  for (auto& chunk : polygon_chunks_) {
-    polygons.insert(polygons.end(), chunk.begin(), chunk.end());
-    std::vector<Polygon>().swap(chunk);
-  }
-  polygon_chunks_.clear();
+  for (const auto& chunk : polygon_chunks_)
+    for (const Polygon& polygon : chunk) polygons.push_back(&polygon);
   // Per seed, its polygons as (triangle, polygon), by triangle: scattered into seed order, then
   // each seed's few sorted. The pieces' lookup (piece_at) later reuses it, polygon → piece.
   std::vector<std::size_t> polygons_of(static_cast<std::size_t>(seeds) + 1, 0);
-  for (const Polygon& polygon : polygons) ++polygons_of[polygon.seed + 1];
+  for (const Polygon* polygon : polygons) ++polygons_of[polygon->seed + 1];
   piece_offsets_ = seed_offsets(std::move(polygons_of));
   std::vector<std::size_t> next(piece_offsets_.begin(), piece_offsets_.end() - 1);
   piece_of_.resize(polygons.size());
-  for (std::size_t p = 0; p < polygons.size(); ++p)
-    piece_of_[next[polygons[p].seed]++] = {polygons[p].triangle, p};
+  for (Index p = 0; p < polygons.size(); ++p)
+    piece_of_[next[polygons[p]->seed]++] = {polygons[p]->triangle, p};
   std::vector<std::size_t>().swap(next);
   sort_each_seed(piece_of_, piece_offsets_,
                  [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
@@ -98,8 +106,8 @@ void CellPieceCollector::end() {
   UnionFind roots(polygons.size());  // each cell's sets apart from the others'
   // Per root polygon, its piece's index among its seed's, sorted by area (largest first), then
   // first polygon; and per seed, those pieces.
-  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-  std::vector<std::size_t> rank(polygons.size(), kNone);
+  constexpr Index kNone = std::numeric_limits<Index>::max();
+  std::vector<Index> rank(polygons.size(), kNone);
   std::vector<std::vector<CellPiece>> of_seed(seeds);
   const SideRings& rings = rings_ ? *rings_ : *own_rings_;
   tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
@@ -107,7 +115,7 @@ void CellPieceCollector::end() {
       const std::size_t begin = piece_offsets_[seed], end = piece_offsets_[seed + 1];
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t p = piece_of_[i].piece;
-        const Polygon& polygon = polygons[p];
+        const Polygon& polygon = *polygons[p];
         for (std::uint32_t e = 0; e < 3; ++e) {
           if (!(polygon.sides & (1u << e))) continue;
           const std::uint32_t side = 3 * polygon.triangle + e;
@@ -120,11 +128,11 @@ void CellPieceCollector::end() {
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t p = piece_of_[i].piece, r = roots.find(p);
         if (rank[r] == kNone) {
-          rank[r] = pieces.size();
+          rank[r] = static_cast<Index>(pieces.size());
           pieces.push_back({seed, p, 0, {}, {}, -1});
         }
         CellPiece& piece = pieces[rank[r]];
-        const Polygon& polygon = polygons[p];
+        const Polygon& polygon = *polygons[p];
         const bool has_area = polygon.area > 0;
         piece.area += polygon.area;
         if (has_area) piece.moment += polygon.moment;
@@ -136,13 +144,15 @@ void CellPieceCollector::end() {
       std::sort(pieces.begin(), pieces.end(), [](const CellPiece& x, const CellPiece& y) {
         return std::make_tuple(-x.area, x.first) < std::make_tuple(-y.area, y.first);
       });
-      for (std::size_t k = 0; k < pieces.size(); ++k) rank[roots.find(pieces[k].first)] = k;
+      for (Index k = 0; k < pieces.size(); ++k) rank[roots.find(pieces[k].first)] = k;
       // Only this seed's entries are read for it (entry): each becomes its piece's rank.
       for (std::size_t i = begin; i < end; ++i)
         piece_of_[i].piece = rank[roots.find(piece_of_[i].piece)];
     }
   });
   own_rings_.reset();
+  polygons = {};
+  polygon_chunks_.clear();
   // The pieces in seed order; each seed's ranks become indices in pieces_.
   std::vector<std::size_t> pieces_of(static_cast<std::size_t>(seeds) + 1, 0);
   for (Index seed = 0; seed < seeds; ++seed) pieces_of[seed + 1] = of_seed[seed].size();
@@ -153,7 +163,7 @@ void CellPieceCollector::end() {
       std::copy(of_seed[seed].begin(), of_seed[seed].end(),
                 pieces_.begin() + static_cast<std::ptrdiff_t>(first_piece[seed]));
       for (std::size_t i = piece_offsets_[seed]; i < piece_offsets_[seed + 1]; ++i)
-        piece_of_[i].piece += first_piece[seed];
+        piece_of_[i].piece += static_cast<Index>(first_piece[seed]);
     }
   });
 }

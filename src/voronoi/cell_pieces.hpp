@@ -42,6 +42,7 @@ class CellPieceCollector : public PolygonSink {
       : surface_(surface), rings_(rings) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
+  void chunk_done(std::size_t chunk) override;
   void end() override;
 
   // By seed, then area (largest first), then first polygon.
@@ -68,7 +69,7 @@ class CellPieceCollector : public PolygonSink {
   // (from piece_offsets_[seed]), each seed's by triangle: what piece_at searches.
   struct PieceOf {
     Index triangle;
-    std::size_t piece;
+    Index piece;
   };
   std::vector<PieceOf> piece_of_;
   std::vector<std::size_t> piece_offsets_;

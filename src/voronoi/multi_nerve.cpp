@@ -24,6 +24,11 @@ void MultiNerveBuilder::polygon(std::size_t chunk, const RvdPolygon& poly) {
   }
 }
 
+void MultiNerveBuilder::chunk_done(std::size_t chunk) {
+  pieces_.chunk_done(chunk);
+  chunks_[chunk].shrink_to_fit();
+}
+
 void MultiNerveBuilder::end() {
   pieces_.end();
   const std::vector<Vec3>& seeds = rvd_.seeds();

@@ -20,6 +20,7 @@ class MultiNerveBuilder : public PolygonSink {
       : rvd_(rvd), pieces_(rvd.surface(), rings) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
+  void chunk_done(std::size_t chunk) override;
   void end() override;
   // Vertices: the seeds, by id (each for its cell's largest piece), then one per other piece at
   // the centroid of that piece's largest polygon (at the seed, where it and the first both reach

@@ -507,6 +507,7 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
     else if (recorder)
       recorder->finish(chunk);
     if (adoptable && !kept) old->release(chunk);
+    for (PolygonSink* sink : sinks) sink->chunk_done(chunk);
   });
   for (PolygonSink* sink : recorded) sink->end();
   TraversalStats stats;
