@@ -8,7 +8,10 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <span>
+#include <vector>
 
+#include "cvtmesh/rvd_consumers.hpp"
 #include "geometry/surface_projector.hpp"
 #include "support/shapes.hpp"
 
@@ -151,6 +154,27 @@ TEST(SurfaceProjector, AlongALineTakesTheNearerOfTwoSheets) {
   const SurfaceProjector surface(two_sheets());
   EXPECT_NEAR(surface.along({0.5, 0.5, 0.3e-3}, {0, 0, 1}, 1).value(), -0.3e-3, 1e-15);
   EXPECT_NEAR(surface.along({0.5, 0.5, 0.7e-3}, {0, 0, 1}, 1).value(), 0.3e-3, 1e-15);
+}
+
+// The projector shares its unit normals with the CVT integrals where it holds every triangle:
+// they must be cvtmesh::unit_normals of the surface to the bit, by surface id. With a triangle
+// without area among others, it leaves that one out, and has none to share.
+TEST(SurfaceProjector, SharesTheSurfacesUnitNormalsOnlyWhereItHoldsEveryTriangle) {
+  const TriangleMesh sphere = icosphere(3);
+  const SurfaceProjector whole(sphere);
+  const std::vector<Vec3> expected = unit_normals(sphere);
+  const std::span<const Vec3> shared = whole.unit_normals();
+  ASSERT_EQ(shared.size(), expected.size());
+  EXPECT_TRUE(std::equal(shared.begin(), shared.end(), expected.begin()));
+
+  TriangleMesh with_flat = sphere;
+  const Triangle first = with_flat.triangles[0];
+  with_flat.triangles.push_back({first[0], first[1], first[1]});  // no area
+  const SurfaceProjector partial(with_flat);
+  EXPECT_TRUE(partial.unit_normals().empty());
+  // The triangles it holds are numbered on: the flat one, last, is not among them.
+  const SurfaceProjector::Foot foot = partial.nearest(1.5 * sphere.vertices[first[0]]);
+  EXPECT_LT(partial.surface_triangle(foot.triangle), sphere.triangles.size());
 }
 
 }  // namespace

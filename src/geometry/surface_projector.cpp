@@ -223,7 +223,8 @@ class WithinTraits {
 struct SurfaceProjector::Tree {
   TriangleStore store;
   std::vector<Vec3> normals;
-  std::vector<Index> surface_id;  // per triangle, its id in the surface
+  std::vector<Index> surface_id;      // per triangle, its id in the surface
+  std::size_t surface_triangles = 0;  // in the surface given
   AabbTree tree;
   std::vector<Vec3> centroids;  // of the triangles: the start of a query with no hint
   std::optional<PointTree> nearest_centroid;
@@ -238,6 +239,7 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
     throw std::length_error("too many triangles for the surface projector");
   TriangleStore& store = tree_->store;
   store.points = surface.vertices;
+  tree_->surface_triangles = surface.triangles.size();
   // Degenerate triangles hold no nearest point that a neighbour does not hold too; they are
   // kept only when nothing else is left, with a zero normal.
   for (const bool keep_degenerate : {false, true}) {
@@ -321,6 +323,12 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
 
 std::size_t SurfaceProjector::surface_triangle(std::size_t triangle) const {
   return tree_->surface_id[triangle];
+}
+
+std::span<const Vec3> SurfaceProjector::unit_normals() const {
+  // Triangles are left out in one case only: some had no area and others had.
+  if (tree_->normals.size() != tree_->surface_triangles) return {};
+  return tree_->normals;
 }
 
 double SurfaceProjector::squared_distance_to(const Vec3& p, std::size_t triangle) const {

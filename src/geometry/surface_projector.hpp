@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "cvtmesh/mesh.hpp"
 
@@ -46,6 +47,10 @@ class SurfaceProjector {
   std::optional<double> along(const Vec3& p, const Vec3& direction, double reach) const;
   // A triangle's id in the surface given, from its id inside the projector.
   std::size_t surface_triangle(std::size_t triangle) const;
+  // Each triangle's unit normal, by its id in the surface given, where the projector holds every
+  // triangle of it (none without area); empty otherwise. The same as cvtmesh::unit_normals of the
+  // surface, bit for bit: a caller that integrates over the surface can share them.
+  std::span<const Vec3> unit_normals() const;
 
  private:
   struct Tree;
