@@ -2,6 +2,9 @@
 
 #include <nanoflann.hpp>
 
+#include <limits>
+#include <stdexcept>
+
 namespace cvtmesh {
 
 namespace {
@@ -19,8 +22,10 @@ struct PointCloud {
   }
 };
 
+// 32-bit ids: the tree keeps one per point (the surface projector's tree has one per input
+// triangle: 8 MB less on a 2M-triangle input than with size_t).
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
-                                                   PointCloud, 3, std::size_t>;
+                                                   PointCloud, 3, Index>;
 
 }  // namespace
 
@@ -33,28 +38,32 @@ struct PointTree::Tree {
   }
 };
 
-PointTree::PointTree(const std::vector<Vec3>& points) : tree_(std::make_unique<Tree>(points)) {}
+PointTree::PointTree(const std::vector<Vec3>& points) {
+  if (points.size() > std::numeric_limits<Index>::max())
+    throw std::length_error("too many points for a kd-tree");
+  tree_ = std::make_unique<Tree>(points);
+}
 PointTree::~PointTree() = default;
 
 Index PointTree::operator()(const Vec3& p) const {
-  std::size_t index = 0;
+  Index index = 0;
   double d2 = 0;
-  nanoflann::KNNResultSet<double, std::size_t> result(1);
+  nanoflann::KNNResultSet<double, Index> result(1);
   result.init(&index, &d2);
   const double query[3] = {p.x, p.y, p.z};
   tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
-  return static_cast<Index>(index);
+  return index;
 }
 
 void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out,
                         double bound2) const {
   // Per thread, not per query: the RVD asks for every seed's neighbours in most evaluations.
-  thread_local std::vector<std::size_t> indices;
+  thread_local std::vector<Index> indices;
   thread_local std::vector<double> d2;
   indices.resize(k);
   d2.resize(k);
   const double query[3] = {p.x, p.y, p.z};
-  nanoflann::KNNResultSet<double, std::size_t> result(k);
+  nanoflann::KNNResultSet<double, Index> result(k);
   result.init(indices.data(), d2.data());
   // The result set's worst distance until it is full: nanoflann prunes every branch farther.
   if (k > 0 && bound2 < d2[k - 1]) d2[k - 1] = bound2;
@@ -63,11 +72,11 @@ void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out,
 }
 
 void PointTree::within(const Vec3& p, double r2, std::vector<Index>& out) const {
-  std::vector<std::pair<std::size_t, double>> found;
+  std::vector<std::pair<Index, double>> found;
   const double query[3] = {p.x, p.y, p.z};
   tree_->index.radiusSearch(query, r2, found, nanoflann::SearchParams(32, 0, false));
   out.clear();
-  for (const auto& [index, d2] : found) out.push_back(static_cast<Index>(index));
+  for (const auto& [index, d2] : found) out.push_back(index);
 }
 
 }  // namespace cvtmesh
