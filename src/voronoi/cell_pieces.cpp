@@ -160,7 +160,8 @@ void CellPieceCollector::end() {
         return std::make_tuple(-x.area, x.first) < std::make_tuple(-y.area, y.first);
       });
       for (Index k = 0; k < pieces.size(); ++k) rank[roots.find(pieces[k].first)] = k;
-      // Only this seed's entries are read for it (entry): each becomes its piece's index.
+      // Each of the seed's entries becomes its piece's index in pieces_ (the first pass, which
+      // read them with entry, is over).
       for (std::size_t i = begin; i < end; ++i)
         piece_of_[i].piece =
             static_cast<Index>(first_piece[seed]) + rank[roots.find(piece_of_[i].piece)];
