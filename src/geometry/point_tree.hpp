@@ -1,5 +1,6 @@
 // Points nearest to a query: a kd-tree over a point set (nanoflann), for the RVD's seeds and
-// the surface projector's triangle centroids.
+// other point sets. (The surface projector has its own over triangle centroids that it keeps no
+// array of.)
 #pragma once
 
 #include <limits>

@@ -8,6 +8,7 @@
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
+#include <nanoflann.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -16,7 +17,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
@@ -42,7 +42,36 @@ struct TriangleStore {
   std::vector<Triangle> corners;
 
   Vec3 corner(std::uint32_t triangle, int k) const { return points[corners[triangle][k]]; }
+  Vec3 centroid(std::uint32_t triangle) const {
+    const Vec3 a = corner(triangle, 0), b = corner(triangle, 1), c = corner(triangle, 2);
+    return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+  }
 };
+
+// nanoflann's view of the triangles' centroids: where a query has no hint, it starts from the
+// nearest centroid. An array of them is kept only while the tree is built, which reads each
+// many times; queries, which read a few, make them as they go (the array took 24 bytes a
+// triangle: 48 MB on a 2M-triangle input).
+struct Centroids {
+  const TriangleStore* store;
+  const std::vector<Vec3>* while_building = nullptr;
+  std::size_t kdtree_get_point_count() const { return store->corners.size(); }
+  double kdtree_get_pt(std::size_t t, std::size_t dim) const {
+    const auto k = static_cast<int>(dim);
+    if (while_building) return (*while_building)[t][k];
+    const auto& corners = store->corners[t];
+    return (store->points[corners[0]][k] + store->points[corners[1]][k] +
+            store->points[corners[2]][k]) /
+           3;
+  }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const {
+    return false;
+  }
+};
+using CentroidTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Centroids>, Centroids,
+                                        3, std::uint32_t>;
 
 // What CGAL's tree reads of a primitive, from its id: its triangle, and its reference point (its
 // first corner, as CGAL's own triangle primitive has it).
@@ -226,8 +255,8 @@ struct SurfaceProjector::Tree {
   std::vector<Index> surface_id;      // per triangle, its id in the surface
   std::size_t surface_triangles = 0;  // in the surface given
   AabbTree tree;
-  std::vector<Vec3> centroids;  // of the triangles: the start of a query with no hint
-  std::optional<PointTree> nearest_centroid;
+  Centroids centroids{&store};  // the start of a query with no hint
+  std::optional<CentroidTree> nearest_centroid;
 
   Foot foot(const Vec3& point, std::uint32_t triangle) const {
     return {point, normals[triangle], triangle};
@@ -264,20 +293,25 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
   // A query without a hint starts from the nearest triangle centroid: a kd-tree over them is
   // faster to build than CGAL's own (accelerate_distance_queries), as fast to query.
   tree_->tree.do_not_accelerate_distance_queries();
-  tree_->centroids.reserve(count);
-  for (std::uint32_t t = 0; t < count; ++t) {
-    const Vec3 a = store.corner(t, 0), b = store.corner(t, 1), c = store.corner(t, 2);
-    tree_->centroids.push_back(
-        {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3});
-  }
-  tree_->nearest_centroid.emplace(tree_->centroids);
+  std::vector<Vec3> centroids(count);
+  for (std::uint32_t t = 0; t < count; ++t) centroids[t] = store.centroid(t);
+  tree_->centroids.while_building = &centroids;
+  tree_->nearest_centroid.emplace(3, tree_->centroids,
+                                  nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  tree_->nearest_centroid->buildIndex();
+  tree_->centroids.while_building = nullptr;
 }
 
 SurfaceProjector::~SurfaceProjector() = default;
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p) const {
-  const Index t = (*tree_->nearest_centroid)(p);
-  return nearest(p, {tree_->centroids[t], tree_->normals[t], t});
+  std::uint32_t t = 0;
+  double d2 = 0;
+  nanoflann::KNNResultSet<double, std::uint32_t> result(1);
+  result.init(&t, &d2);
+  const double query[3] = {p.x, p.y, p.z};
+  tree_->nearest_centroid->findNeighbors(result, query, nanoflann::SearchParams());
+  return nearest(p, {tree_->store.centroid(t), tree_->normals[t], t});
 }
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p, const Foot& hint) const {
