@@ -42,9 +42,13 @@ struct TriangleStore {
   std::vector<Triangle> corners;
 
   Vec3 corner(std::uint32_t triangle, int k) const { return points[corners[triangle][k]]; }
+  // Coordinate k of the triangle's centroid (as CGAL::centroid makes it, bit for bit).
+  double centroid(std::uint32_t triangle, int k) const {
+    const Triangle& c = corners[triangle];
+    return (points[c[0]][k] + points[c[1]][k] + points[c[2]][k]) / 3;
+  }
   Vec3 centroid(std::uint32_t triangle) const {
-    const Vec3 a = corner(triangle, 0), b = corner(triangle, 1), c = corner(triangle, 2);
-    return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+    return {centroid(triangle, 0), centroid(triangle, 1), centroid(triangle, 2)};
   }
 };
 
@@ -58,11 +62,8 @@ struct Centroids {
   std::size_t kdtree_get_point_count() const { return store->corners.size(); }
   double kdtree_get_pt(std::size_t t, std::size_t dim) const {
     const auto k = static_cast<int>(dim);
-    if (while_building) return (*while_building)[t][k];
-    const auto& corners = store->corners[t];
-    return (store->points[corners[0]][k] + store->points[corners[1]][k] +
-            store->points[corners[2]][k]) /
-           3;
+    return while_building ? (*while_building)[t][k]
+                          : store->centroid(static_cast<std::uint32_t>(t), k);
   }
   template <class Box>
   bool kdtree_get_bbox(Box&) const {
