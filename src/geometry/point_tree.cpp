@@ -2,8 +2,7 @@
 
 #include <nanoflann.hpp>
 
-#include <limits>
-#include <stdexcept>
+#include "geometry/index_range.hpp"
 
 namespace cvtmesh {
 
@@ -39,8 +38,7 @@ struct PointTree::Tree {
 };
 
 PointTree::PointTree(const std::vector<Vec3>& points) {
-  if (points.size() > std::numeric_limits<Index>::max())
-    throw std::length_error("too many points for a kd-tree");
+  require_index_range(points.size(), "points for a kd-tree");
   tree_ = std::make_unique<Tree>(points);
 }
 PointTree::~PointTree() = default;

@@ -12,11 +12,10 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
-#include <stdexcept>
 #include <vector>
 
+#include "geometry/index_range.hpp"
 #include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
@@ -265,8 +264,7 @@ struct SurfaceProjector::Tree {
 };
 
 SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::make_unique<Tree>()) {
-  if (surface.triangles.size() > std::numeric_limits<std::uint32_t>::max())
-    throw std::length_error("too many triangles for the surface projector");
+  require_index_range(surface.triangles.size(), "triangles for the surface projector");
   TriangleStore& store = tree_->store;
   store.points = surface.vertices;
   tree_->surface_triangles = surface.triangles.size();

@@ -4,10 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
-#include <stdexcept>
 #include <tuple>
+
+#include "geometry/index_range.hpp"
 
 namespace cvtmesh {
 
@@ -16,8 +16,7 @@ namespace cvtmesh {
 // 3·F sides was the report's largest cost on big inputs.
 std::vector<TriangleSide> sorted_sides(std::size_t vertices,
                                        const std::vector<Triangle>& triangles) {
-  if (triangles.size() > std::numeric_limits<Index>::max())
-    throw std::length_error("too many triangles for their sides' list");
+  require_index_range(triangles.size(), "triangles for their sides' list");
   std::vector<std::size_t> start(vertices + 1, 0);
   for (const Triangle& f : triangles)
     for (int k = 0; k < 3; ++k) ++start[std::min(f[k], f[(k + 1) % 3]) + 1];

@@ -3,11 +3,11 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <numeric>
-#include <stdexcept>
 #include <utility>
 #include <vector>
+
+#include "geometry/index_range.hpp"
 
 namespace cvtmesh {
 
@@ -32,8 +32,7 @@ class UnionFind {
 
  private:
   static std::size_t checked(std::size_t n) {
-    if (n > std::numeric_limits<std::uint32_t>::max())
-      throw std::length_error("too many elements for a union-find");
+    require_index_range(n, "elements for a union-find");
     return n;
   }
   std::vector<std::uint32_t> parent_, size_;

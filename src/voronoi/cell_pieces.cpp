@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "geometry/index_range.hpp"
 #include "geometry/union_find.hpp"
 
 namespace cvtmesh {
@@ -81,8 +82,7 @@ void CellPieceCollector::end() {
     for (const Polygon& polygon : chunk) seeds = std::max(seeds, polygon.seed + 1);
   }
   // Polygon and piece ids take 32 bits (2^32 polygons would need some 170 GB).
-  if (polygon_count > std::numeric_limits<Index>::max())
-    throw std::length_error("too many polygons for the cell pieces");
+  require_index_range(polygon_count, "polygons for the cell pieces");
   std::vector<const Polygon*> polygons;
   polygons.reserve(polygon_count);
   for (const auto& chunk : polygon_chunks_)
