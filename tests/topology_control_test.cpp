@@ -465,36 +465,84 @@ TriangleMesh grid() {
   return m;
 }
 
-TEST(FlipOut, AnInnerEdgeGivesWayToTheOtherDiagonal) {
-  TriangleMesh m = grid();
-  EXPECT_TRUE(flip_out(m, {6, 12}));  // the diagonal of the square at (1, 1)
-  EXPECT_FALSE(has_edge(m, 6, 12));
-  EXPECT_TRUE(has_edge(m, 7, 11));
-  EXPECT_EQ(m.triangles.size(), grid().triangles.size());
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) {  // still facing +z, as before
+// Whether every triangle of m faces +z (m flat in z = 0).
+bool faces_up(const TriangleMesh& m) {
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto [a, b, c] = m.corners(t);
-    EXPECT_GT(cross(b - a, c - a).z, 0);
+    if (!(cross(b - a, c - a).z > 0)) return false;
   }
-  EXPECT_FALSE(flip_out(m, {6, 12}));  // gone already
+  return true;
 }
 
-TEST(FlipOut, NoFlipAtAVertexOfThreeTrianglesOrFewerOnAFoldOrOntoAnEdge) {
-  TriangleMesh square = split_square();  // its diagonal's ends have two triangles each
-  EXPECT_FALSE(flip_out(square, {1, 3}));
+// Edge (0, 1) from a = (0, 0) to b = (b_x, 0) between triangles (0, 1, 2) and (1, 0, 3), c and d
+// their third corners, with two more triangles at a and two at b (four each): a flip is allowed.
+TriangleMesh butterfly(double b_x, const Vec3& c, const Vec3& d) {
+  TriangleMesh m;
+  m.vertices = {{0, 0, 0},           {b_x, 0, 0},         c, d, {-0.5, 0.8, 0}, {-0.5, -0.8, 0},
+                {b_x + 0.5, 0.8, 0}, {b_x + 0.5, -0.8, 0}};
+  m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 2, 4}, {0, 4, 5},
+                 {0, 5, 3}, {1, 6, 2}, {1, 7, 6}, {1, 3, 7}};
+  return m;
+}
+
+TEST(TakeOutEdge, FlipsWhereTheFlipLeavesTheBetterAngles) {
+  // c and d near the middle of a long edge: flipped, 33° at a and b; halved, 17° there.
+  TriangleMesh m = butterfly(2, {1, 0.3, 0}, {1, -0.3, 0});
+  ASSERT_TRUE(faces_up(m));
+  EXPECT_TRUE(take_out_edge(m, {0, 1}));
+  EXPECT_FALSE(has_edge(m, 0, 1));
+  EXPECT_TRUE(has_edge(m, 2, 3));
+  EXPECT_EQ(m.vertices.size(), butterfly(2, {}, {}).vertices.size());
+  EXPECT_EQ(m.triangles.size(), butterfly(2, {}, {}).triangles.size());
+  EXPECT_TRUE(faces_up(m));
+  EXPECT_FALSE(take_out_edge(m, {0, 1}));  // gone already
+}
+
+TEST(TakeOutEdge, HalvesWhereTheFlipWouldLeaveAThinTriangle) {
+  // c and d far above and below a: the flip would leave (c, a, d) with 169° at a (as at
+  // cow.obj's pinch); halved, no angle is under 20°.
+  TriangleMesh m = butterfly(1, {0.1, 1, 0}, {0.1, -1, 0});
+  const TriangleMesh before = m;
+  EXPECT_TRUE(take_out_edge(m, {0, 1}));
+  EXPECT_FALSE(has_edge(m, 0, 1));
+  EXPECT_FALSE(has_edge(m, 2, 3));
+  ASSERT_EQ(m.vertices.size(), before.vertices.size() + 1);
+  EXPECT_EQ(m.vertices.back(), (Vec3{0.5, 0, 0}));
+  EXPECT_EQ(m.triangles.size(), before.triangles.size() + 2);
+  for (const Index v : {Index{0}, Index{1}, Index{2}, Index{3}})
+    EXPECT_TRUE(has_edge(m, v, static_cast<Index>(before.vertices.size())));
+  EXPECT_TRUE(faces_up(m));
+  EXPECT_GT(measure_quality(m).angle_min_deg, 20);
+}
+
+TEST(TakeOutEdge, HalvesWhereNoFlipMayBe) {
+  // The square's diagonal: its ends have two triangles each, which a flip would leave at one.
+  TriangleMesh square = split_square();
+  EXPECT_TRUE(take_out_edge(square, {1, 3}));
+  EXPECT_FALSE(has_edge(square, 1, 3));
+  EXPECT_EQ(square.triangles.size(), 4u);
+  EXPECT_TRUE(faces_up(square));
   // Edge (6, 7) of the grid lies between (1, 6, 7) and (6, 12, 7): its other diagonal is
   // (1, 12). With vertex 6 moved above that diagonal, the quad is not convex there, and
   // (1, 6, 12) would face -z.
   TriangleMesh dart = grid();
   dart.vertices[6] = {1, 1.6, 0};
-  EXPECT_FALSE(flip_out(dart, {6, 7}));
-  EXPECT_EQ(dart.triangles, grid().triangles);
-  TriangleMesh flat = grid();
-  EXPECT_TRUE(flip_out(flat, {6, 7}));  // where it is convex
-  // The other diagonal an edge already (a triangle on it, off the grid): no flip.
+  EXPECT_TRUE(take_out_edge(dart, {6, 7}));
+  EXPECT_FALSE(has_edge(dart, 6, 7));
+  EXPECT_FALSE(has_edge(dart, 1, 12));
+  EXPECT_TRUE(faces_up(dart));
+  // The other diagonal an edge already (a triangle on it, off the grid).
   TriangleMesh joined = grid();
   joined.vertices.push_back({1, 1.5, 1});
   joined.triangles.push_back({1, 12, 25});
-  EXPECT_FALSE(flip_out(joined, {6, 7}));
+  EXPECT_TRUE(take_out_edge(joined, {6, 7}));
+  EXPECT_FALSE(has_edge(joined, 6, 7));
+  EXPECT_EQ(joined.vertices.size(), grid().vertices.size() + 2);  // the off-grid one, the middle
+  // An edge of one triangle (the grid's rim) or none: nothing to take out.
+  TriangleMesh rim = grid();
+  EXPECT_FALSE(take_out_edge(rim, {0, 1}));
+  EXPECT_FALSE(take_out_edge(rim, {0, 24}));
+  EXPECT_EQ(rim.triangles, grid().triangles);
 }
 
 // A boundary tip: triangle (0, 1, 2) and corner 3 past its edge (0, 1), used by no triangle.

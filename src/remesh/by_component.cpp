@@ -413,10 +413,10 @@ std::vector<Index> neighbours_of(const TriangleMesh& mesh, Index v) {
 
 // Where the output vertices at one pinch (`found`, sorted: runs by input vertex) share a
 // neighbour w, welding them would join their edges to w into one edge of four triangles. The
-// edge from each vertex but the first to such a w, unless a feature edge, is flipped out where
-// it can be (flip_out): the copies then meet only at the pinch, as the input's fans do (cow.obj
-// of a public test set at 1k: one shared neighbour, a seed topology control had added, left its
-// pinch unwelded and the output a sphere, Euler characteristic 2 for the input's 1).
+// edge from each vertex but the first to such a w, unless a feature edge, is taken out, flipped
+// or halved (take_out_edge): the copies then meet only at the pinch, as the input's fans do
+// (cow.obj of a public test set at 1k: one shared neighbour, a seed topology control had added,
+// left its pinch unwelded and the output a sphere, Euler characteristic 2 for the input's 1).
 void part_pinch_copies(TriangleMesh& mesh, const std::vector<Edge>& feature_edges,
                        const std::vector<std::pair<Index, Index>>& found) {
   for (std::size_t i = 0, j = 0; i < found.size(); i = j) {
@@ -429,7 +429,7 @@ void part_pinch_copies(TriangleMesh& mesh, const std::vector<Edge>& feature_edge
         const Edge e = edge_of(copy, w);
         if (std::binary_search(seen.begin(), seen.end(), w) &&
             std::find(feature_edges.begin(), feature_edges.end(), e) == feature_edges.end())
-          flip_out(mesh, e);
+          take_out_edge(mesh, e);
       }
       const std::vector<Index> more = neighbours_of(mesh, copy);
       seen.insert(seen.end(), more.begin(), more.end());

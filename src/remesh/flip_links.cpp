@@ -169,11 +169,11 @@ std::vector<bool> flip_in_links(TriangleMesh& mesh, const std::vector<Edge>& lin
   return flipped;
 }
 
-bool flip_out(TriangleMesh& mesh, const Edge& e) {
+bool take_out_edge(TriangleMesh& mesh, const Edge& e) {
   const VertexTriangles at(mesh);
   const auto [a, b] = e;
   const std::vector<Index> on_edge = triangles_on(mesh, at, a, b);
-  if (on_edge.size() != 2 || at(a).size() < 4 || at(b).size() < 4) return false;
+  if (on_edge.size() != 2) return false;
   // t1 walks a → b, t2 b → a: their third corners c and d.
   Index t1 = on_edge[0], t2 = on_edge[1];
   if (mesh.triangles[t1][(position(mesh.triangles[t1], a) + 1) % 3] != b) std::swap(t1, t2);
@@ -181,12 +181,32 @@ bool flip_out(TriangleMesh& mesh, const Edge& e) {
   if (first[(position(first, a) + 1) % 3] != b || second[(position(second, b) + 1) % 3] != a)
     return false;
   const Index c = first[(position(first, b) + 1) % 3], d = second[(position(second, a) + 1) % 3];
-  if (c == d || has_edge(mesh, at, c, d)) return false;
+  if (c == d) return false;
+  // The flip: (c, a, d) and (d, b, c), where c-d is no edge yet, a and b keep three triangles
+  // each, and neither new triangle folds over.
   const Triangle new1{c, a, d}, new2{d, b, c};
   const Vec3 facing = normal(mesh, first) + normal(mesh, second);
-  if (!(dot(normal(mesh, new1), facing) > 0 && dot(normal(mesh, new2), facing) > 0)) return false;
-  mesh.triangles[t1] = new1;
-  mesh.triangles[t2] = new2;
+  const bool flippable = at(a).size() >= 4 && at(b).size() >= 4 && !has_edge(mesh, at, c, d) &&
+                         dot(normal(mesh, new1), facing) > 0 && dot(normal(mesh, new2), facing) > 0;
+  const double flipped_angle =
+      flippable ? std::min(smallest_angle(mesh, new1), smallest_angle(mesh, new2)) : -1;
+  // The halving: a vertex m at the edge's middle, in the plane of each old triangle, so no fold.
+  const auto m = static_cast<Index>(mesh.vertices.size());
+  mesh.vertices.push_back(0.5 * (mesh.vertices[a] + mesh.vertices[b]));
+  const std::array<Triangle, 4> halves{Triangle{a, m, c}, Triangle{m, b, c}, Triangle{b, m, d},
+                                       Triangle{m, a, d}};
+  double halved_angle = 180;
+  for (const Triangle& t : halves) halved_angle = std::min(halved_angle, smallest_angle(mesh, t));
+  if (flipped_angle >= halved_angle) {
+    mesh.vertices.pop_back();
+    mesh.triangles[t1] = new1;
+    mesh.triangles[t2] = new2;
+    return true;
+  }
+  mesh.triangles[t1] = halves[0];
+  mesh.triangles[t2] = halves[2];
+  mesh.triangles.push_back(halves[1]);
+  mesh.triangles.push_back(halves[3]);
   return true;
 }
 
