@@ -413,8 +413,8 @@ std::vector<Index> neighbours_of(const TriangleMesh& mesh, Index v) {
 
 // Where the output vertices at one pinch (`found`, sorted: runs by input vertex) share a
 // neighbour w, welding them would join their edges to w into one edge of four triangles. The
-// edge from each vertex but the first to such a w, unless a feature edge, is taken out, flipped
-// or halved (take_out_edge): the copies then meet only at the pinch, as the input's fans do
+// edge from each vertex but the first to such a w, unless a feature edge, is taken out (flipped
+// or halved: take_out_edge): the copies then meet only at the pinch, as the input's fans do
 // (cow.obj of a public test set at 1k: one shared neighbour, a seed topology control had added,
 // left its pinch unwelded and the output a sphere, Euler characteristic 2 for the input's 1).
 void part_pinch_copies(TriangleMesh& mesh, const std::vector<Edge>& feature_edges,
