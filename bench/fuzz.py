@@ -127,7 +127,8 @@ def main():
     data = Path(args.data)
     if not Path(cli).exists() or not data.is_dir():
         sys.exit(f"fuzz.py: needs {cli} (build first) and {data}")
-    meshes = sorted(p for d in (data, data / "corpus") for p in d.iterdir()
+    # DIR and DIR/corpus, as ../shared/data is laid out; any other folder of meshes alone.
+    meshes = sorted(p for d in (data, data / "corpus") if d.is_dir() for p in d.iterdir()
                     if p.suffix in (".off", ".obj"))
     only = set(filter(None, args.only.split(",")))
     failures, slow, runs = [], [], 0
