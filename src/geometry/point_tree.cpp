@@ -3,6 +3,7 @@
 #include <nanoflann.hpp>
 
 #include "geometry/index_range.hpp"
+#include "geometry/kd_nearest.hpp"
 
 namespace cvtmesh {
 
@@ -44,13 +45,7 @@ PointTree::PointTree(const std::vector<Vec3>& points) {
 PointTree::~PointTree() = default;
 
 Index PointTree::operator()(const Vec3& p) const {
-  Index index = 0;
-  double d2 = 0;
-  nanoflann::KNNResultSet<double, Index> result(1);
-  result.init(&index, &d2);
-  const double query[3] = {p.x, p.y, p.z};
-  tree_->index.findNeighbors(result, query, nanoflann::SearchParams());
-  return index;
+  return nearest_id(tree_->index, p);
 }
 
 void PointTree::nearest(const Vec3& p, std::size_t k, std::vector<Index>& out,

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "geometry/index_range.hpp"
+#include "geometry/kd_nearest.hpp"
 #include "geometry/unit_vector.hpp"
 
 namespace cvtmesh {
@@ -71,7 +72,7 @@ struct Centroids {
 };
 using CentroidTree =
     nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Centroids>, Centroids,
-                                        3, std::uint32_t>;
+                                        3, Index>;
 
 // What CGAL's tree reads of a primitive, from its id: its triangle, and its reference point (its
 // first corner, as CGAL's own triangle primitive has it).
@@ -304,12 +305,7 @@ SurfaceProjector::SurfaceProjector(const TriangleMesh& surface) : tree_(std::mak
 SurfaceProjector::~SurfaceProjector() = default;
 
 SurfaceProjector::Foot SurfaceProjector::nearest(const Vec3& p) const {
-  std::uint32_t t = 0;
-  double d2 = 0;
-  nanoflann::KNNResultSet<double, std::uint32_t> result(1);
-  result.init(&t, &d2);
-  const double query[3] = {p.x, p.y, p.z};
-  tree_->nearest_centroid->findNeighbors(result, query, nanoflann::SearchParams());
+  const Index t = nearest_id(*tree_->nearest_centroid, p);
   return nearest(p, {tree_->store.centroid(t), tree_->normals[t], t});
 }
 

@@ -191,18 +191,20 @@ bool take_out_edge(TriangleMesh& mesh, const Edge& e) {
   const double flipped_angle =
       flippable ? std::min(smallest_angle(mesh, new1), smallest_angle(mesh, new2)) : -1;
   // The halving: a vertex m at the edge's middle, in the plane of each old triangle, so no fold.
-  const auto m = static_cast<Index>(mesh.vertices.size());
-  mesh.vertices.push_back(0.5 * (mesh.vertices[a] + mesh.vertices[b]));
-  const std::array<Triangle, 4> halves{Triangle{a, m, c}, Triangle{m, b, c}, Triangle{b, m, d},
-                                       Triangle{m, a, d}};
-  double halved_angle = 180;
-  for (const Triangle& t : halves) halved_angle = std::min(halved_angle, smallest_angle(mesh, t));
+  const std::vector<Vec3>& p = mesh.vertices;
+  const Vec3 middle = 0.5 * (p[a] + p[b]);
+  const double halved_angle =
+      std::min({min_shape(p[a], middle, p[c]).min_angle, min_shape(middle, p[b], p[c]).min_angle,
+                min_shape(p[b], middle, p[d]).min_angle, min_shape(middle, p[a], p[d]).min_angle});
   if (flipped_angle >= halved_angle) {
-    mesh.vertices.pop_back();
     mesh.triangles[t1] = new1;
     mesh.triangles[t2] = new2;
     return true;
   }
+  const auto m = static_cast<Index>(mesh.vertices.size());
+  mesh.vertices.push_back(middle);
+  const std::array<Triangle, 4> halves{Triangle{a, m, c}, Triangle{m, b, c}, Triangle{b, m, d},
+                                       Triangle{m, a, d}};
   mesh.triangles[t1] = halves[0];
   mesh.triangles[t2] = halves[2];
   mesh.triangles.push_back(halves[1]);
