@@ -1,6 +1,6 @@
-// How the output's last steps judge a round (finish/bar_shapes): the bar away from the input's
-// narrow angles, and at them, the shapes against the input angle, which a round must not lower
-// unless its worst triangle over all is better.
+// How the output's last steps judge a round (finish/bar_shapes): fewer triangles of no area first;
+// then the bar away from the input's narrow angles, and at them, the shapes against the input
+// angle, which a round must not lower unless its worst triangle over all is better.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -97,6 +97,27 @@ TEST(BarShapes, ASplitIsBetterWithFewerUnderTheBarAndNoWorseAtNarrowAngles) {
   // As in lion.off at 1k: the worst away a little lower, the worst at its tip far better.
   EXPECT_TRUE(
       shaped_better({2, {0.66, 0.67}, 0.66, 1.0, 0.66}, {2, {0.69, 0.67}, 0.47, 1.0, 0.40}));
+}
+
+TEST(BarShapes, AFlatTriangleIsCountedAndFewerOfThemComeFirst) {
+  TriangleMesh m = three_triangles();
+  EXPECT_EQ(bar_shapes(m, {}, 0.1).flat, 0u);
+  m.vertices.push_back({30, 0, 0});
+  m.vertices.push_back({31, 0, 0});
+  m.vertices.push_back({32, 1e-9, 0});  // all but on the line of the other two
+  m.triangles.push_back({9, 10, 11});
+  const BarShapes flat = bar_shapes(m, {}, 0.1);
+  EXPECT_EQ(flat.flat, 1u);
+  EXPECT_EQ(flat.under, 3u);
+  // Fewer under the bar, a better worst triangle: no better with a flat one more.
+  const BarShapes kept{2, {0.6, 0.5}, 0.4, 1.0, 0.3};
+  BarShapes one_flat{0, {0.7, 0.6}, 0.5, 1.0, 0.5};
+  one_flat.flat = 1;
+  EXPECT_FALSE(shaped_better(one_flat, kept));
+  EXPECT_EQ(judge_round(one_flat, kept), Verdict::no_better);
+  // And a flat one fewer is better, whatever the rest.
+  EXPECT_TRUE(shaped_better(kept, one_flat));
+  EXPECT_EQ(judge_round(kept, one_flat), Verdict::better);
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 // Boundary corners whose one triangle holds an obtuse angle (finish/split_obtuse_corners): the
 // edge across halved, the corner's angle shared by two triangles, the topology kept; nothing done
-// across a feature edge, where the surface is far, at an inner vertex or under 100°, or where the
-// surface's nearest point would leave a triangle of no area. Under the bar
+// across a feature edge, where the surface is far, at an inner vertex or under 100°. Under the bar
 // (ObtuseCorners::under_bar): inner vertices too, the worst first, few at a time; given the
 // curves, a feature or boundary edge across halved on its curve; none at a narrow input angle.
 #include <gtest/gtest.h>
@@ -76,26 +75,6 @@ TEST(SplitObtuseCorners, NothingAcrossAFeatureFarFromTheSurfaceAtAnInnerVertexOr
   const std::size_t triangles = inner.triangles.size();
   EXPECT_EQ(split_obtuse_corners(inner, {}, SurfaceProjector(inner)), 0u);
   EXPECT_EQ(inner.triangles.size(), triangles);
-}
-
-TEST(SplitObtuseCorners, NothingWhereTheMiddlesFootWouldLeaveATriangleOfNoArea) {
-  // At 176° the corner c stands 0.035 off the middle of a-b. The surface nearest the middle is
-  // the corner of a small triangle on the line c-a, within a quarter of the edge: the half
-  // (c, a, foot) would have no area.
-  const TriangleMesh m = ear(176);
-  const Vec3 c = m.vertices[2], a = m.vertices[0];
-  const Vec3 foot = c + 0.3 * (a - c);
-  TriangleMesh aside;
-  aside.vertices = {foot, foot + Vec3{-1, 0.5, 0}, foot + Vec3{-0.5, 1, 0}};
-  aside.triangles = {{0, 1, 2}};
-  TriangleMesh flat = m;
-  EXPECT_EQ(split_obtuse_corners(flat, {}, SurfaceProjector(aside)), 0u);
-  EXPECT_EQ(flat.triangles, m.triangles);
-  // The same ear with its own surface a little above it: the halves face as the ear does.
-  TriangleMesh lifted = m;
-  for (Vec3& p : lifted.vertices) p.z += 0.01;
-  TriangleMesh split = m;
-  EXPECT_EQ(split_obtuse_corners(split, {}, SurfaceProjector(lifted)), 1u);
 }
 
 // The ear's corner made an inner vertex: a fan closing round it, shifted by `x`.

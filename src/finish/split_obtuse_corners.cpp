@@ -9,7 +9,6 @@
 #include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
-#include "quality/min_shape.hpp"
 #include "quality/narrow_angles.hpp"
 
 namespace cvtmesh {
@@ -27,11 +26,6 @@ constexpr double kMostOffset = 0.25;
 // θmin 17.5° → 20.7°.
 constexpr std::size_t kVerticesPerSplit = 100;
 
-// How much of a new triangle's smallest angle the middle's foot must keep: far less than the
-// sweeps after the split mend where the surface bends (femur.off at 10k, thin walls: 9° for the
-// middle's 22°, and the better output for it), enough to refuse a triangle of no area.
-constexpr double kLeastAngleKept = 0.1;
-
 // The curve a feature edge (a, b) runs along, by its vertices' supports: the curve of either one
 // on a curve (a fixed vertex, a corner, may end several); none where they name two curves or none.
 std::optional<std::uint32_t> curve_of(const std::vector<VertexSupport>& supports, Index a,
@@ -44,35 +38,6 @@ std::optional<std::uint32_t> curve_of(const std::vector<VertexSupport>& supports
   const std::optional<std::uint32_t> ca = on_curve(a), cb = on_curve(b);
   if (ca && cb && *ca != *cb) return std::nullopt;
   return ca ? ca : cb;
-}
-
-// The triangles a split makes, as split_obtuse_corners orders them, with `m` as the new vertex:
-// two where d is none (a boundary edge halved).
-std::vector<std::array<Vec3, 3>> halves_with(const std::vector<Vec3>& at, Index a, Index b, Index c,
-                                             Index d, const Vec3& m) {
-  std::vector<std::array<Vec3, 3>> halves{{at[c], at[a], m}, {at[c], m, at[b]}};
-  if (d != kNoIndex) halves.push_back({at[b], m, at[d]}), halves.push_back({m, at[a], at[d]});
-  return halves;
-}
-
-// Whether the triangles a split makes with `foot` as the new vertex are shaped as those it would
-// make with the edge's exact middle: each facing the same way, with at least kLeastAngleKept of
-// its smallest angle. Near an angle of 180° the middle lies just off c, and a foot a little aside
-// can land on a line through c: the split then leaves a triangle of no area, which no sweep mends
-// at a boundary (teapot.obj of a public test set, noised, at 9k: two, θmin 0°).
-bool foot_keeps_shapes(const std::vector<Vec3>& at, Index a, Index b, Index c, Index d,
-                       const Vec3& middle, const Vec3& foot) {
-  const std::vector<std::array<Vec3, 3>> even = halves_with(at, a, b, c, d, middle),
-                                         made = halves_with(at, a, b, c, d, foot);
-  const auto normal = [](const std::array<Vec3, 3>& t) { return cross(t[1] - t[0], t[2] - t[0]); };
-  for (std::size_t i = 0; i < even.size(); ++i) {
-    const auto& [p, q, r] = even[i];
-    const auto& [p2, q2, r2] = made[i];
-    if (!(dot(normal(even[i]), normal(made[i])) > 0) ||
-        min_shape(p2, q2, r2).min_angle < kLeastAngleKept * min_shape(p, q, r).min_angle)
-      return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -150,7 +115,6 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
         curve ? along->curves.nearest(*curve, middle).point : surface.nearest(middle).point;
     const double length = distance(mesh.vertices[a], mesh.vertices[b]);
     if (distance(foot, middle) > kMostOffset * length) continue;
-    if (!foot_keeps_shapes(mesh.vertices, a, b, c, d, middle, foot)) continue;
     const auto m = static_cast<Index>(mesh.vertices.size());
     mesh.vertices.push_back(foot);
     mesh.triangles[t] = {c, a, m};
