@@ -42,7 +42,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 COUNTS = [300, 1500, 4000, 9000]
 # An output triangle with an angle under this has no area to speak of, which the manifold
-# guarantee (issue 18 item 1) rules out.
+# guarantee (issue 18 item 1) rules out: the threshold of corpus.py's guard and of the finishing
+# steps' judge (kFlatDeg in src/finish/bar_shapes.hpp).
 FLAT_DEG = 1e-3
 
 
