@@ -551,6 +551,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "links_flipped",
                           "tips_closed",
                           "flat_ears_removed",
+                          "flat_pairs_merged",
                           "input_crossing_triangles",
                           "mend_rounds",
                           "shape_flips",

@@ -188,6 +188,11 @@ struct RemeshResult {
   // across the third edge. The boundary loop stays;
   // the vertex goes, and the links from it to its two neighbours count as missing.
   std::size_t flat_ears_removed = 0;
+  // Flat pairs merged at the boundary (finish/flat_pairs): a vertex that is no corner, on a
+  // boundary of 160° or more, with two triangles, which became one without it; kept only where
+  // the output, swept and through the halving rounds, is better shaped so than without. The
+  // boundary loop stays.
+  std::size_t flat_pairs_merged = 0;
   // Surface vertices of three triangles removed for the triangle of their three neighbours,
   // where that is better shaped (finish/valence_three): how topology control's seeds next to
   // others often end. The topology stays; so may the count of vertices asked for not.

@@ -383,6 +383,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.vertices_closing_holes += part.vertices_closing_holes;
   all.input_crossing_triangles += part.input_crossing_triangles;
   all.flat_ears_removed += part.flat_ears_removed;
+  all.flat_pairs_merged += part.flat_pairs_merged;
   all.valence_three_removed += part.valence_three_removed;
   all.obtuse_corners_split += part.obtuse_corners_split;
   all.time_limit_reached |= part.time_limit_reached;

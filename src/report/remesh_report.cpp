@@ -51,6 +51,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
+  j["flat_pairs_merged"] = r.flat_pairs_merged;
   j["valence_three_removed"] = r.valence_three_removed;
   j["obtuse_corners_split"] = r.obtuse_corners_split;
   j["seeds_added"] = r.islands_seeded + r.seeds_refined + r.links_mended + r.count_grown;
@@ -140,6 +141,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
         "  boundary  {} flat or folded ears removed (a boundary vertex whose one triangle "
         "was flat, or folded back over its neighbour)\n",
         r.flat_ears_removed);
+  if (r.flat_pairs_merged > 0)
+    text += fmt::format(
+        "  boundary  {} flat pairs merged (a boundary vertex with two triangles on a nearly "
+        "straight boundary: the two became one without it)\n",
+        r.flat_pairs_merged);
   if (r.obtuse_corners_split > 0)
     text += fmt::format(
         "  shapes    {} obtuse corners split (a triangle over 100° at a boundary vertex, or under "
