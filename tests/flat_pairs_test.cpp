@@ -10,6 +10,7 @@
 #include "cvtmesh/topology.hpp"
 #include "features/edge_uses.hpp"
 #include "finish/flat_pairs.hpp"
+#include "finish/worst_shape.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
@@ -90,6 +91,22 @@ TEST(FlatPairs, ACornerAWideAngleAndAnExistingChordStay) {
   closed.mesh.triangles.push_back(
       {closed.c, closed.b, static_cast<Index>(closed.mesh.vertices.size() - 1)});
   EXPECT_EQ(merge_flat_pairs(closed.mesh, features, none(closed.mesh)), 0u);
+}
+
+// Two triangles over the bar on a boundary of 174°: merging would only move the boundary.
+TEST(FlatPairs, APairOverTheBarStays) {
+  TriangleMesh pair;
+  pair.vertices = {{0, 0, 0}, {1, -0.05, 0}, {2, 0, 0}, {1, 1, 0}};  // a, v, b, c
+  pair.triangles = {{0, 1, 3}, {1, 2, 3}};
+  for (const Triangle& t : pair.triangles) {
+    const MinShape s = min_shape(pair.vertices[t[0]], pair.vertices[t[1]], pair.vertices[t[2]]);
+    ASSERT_GE(s.quality, kBarQuality);
+    ASSERT_GE(s.min_angle, kBarAngleDeg);
+  }
+  std::vector<Edge> features;
+  EXPECT_EQ(merge_flat_pairs(pair, features, none(pair)), 0u);
+  pair.vertices[3] = {1, 3, 0};  // now both under the bar (18°), the merged one better (37°)
+  EXPECT_EQ(merge_flat_pairs(pair, features, none(pair)), 1u);
 }
 
 TEST(FlatPairs, AFeatureCurveAlongTheBoundaryRunsAlongTheChord) {

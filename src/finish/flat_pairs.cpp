@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "features/edge_uses.hpp"
+#include "finish/worst_shape.hpp"
 #include "quality/min_shape.hpp"
 
 namespace cvtmesh {
@@ -46,9 +47,11 @@ std::optional<FlatPair> pair_at(const TriangleMesh& mesh, Index v, std::size_t t
   return pair;
 }
 
-// Whether merging the pair keeps the surface as it was, only better or as well shaped: a flat
-// boundary at v, the merged triangle facing as both halves did, and its shape no worse than
-// the worse half's.
+// Whether merging the pair mends a triangle under the bar and keeps the surface as it was, only
+// better or as well shaped: a half under the bar (a pair of good triangles stays: its chord
+// would cut inside a curved boundary for nothing, cylinder.off adaptive at 2k: Hausdorff max
+// 0.040% -> 0.075% for a Qmin better in the fourth digit), a flat boundary at v, the merged
+// triangle facing as both halves did, and its shape no worse than the worse half's.
 bool worth_merging(const TriangleMesh& mesh, const FlatPair& p) {
   const Vec3 &v = mesh.vertices[p.v], &a = mesh.vertices[p.a], &b = mesh.vertices[p.b],
              &c = mesh.vertices[p.c];
@@ -57,8 +60,12 @@ bool worth_merging(const TriangleMesh& mesh, const FlatPair& p) {
   if (!(lengths > 0) || dot(va, vb) > kFlatPairCos * lengths) return false;
   const Vec3 merged = cross(c - a, b - a);
   if (dot(merged, cross(a - v, c - v)) <= 0 || dot(merged, cross(c - v, b - v)) <= 0) return false;
-  const double worse = std::min(min_shape(v, a, c).quality, min_shape(v, c, b).quality);
-  return min_shape(a, c, b).quality >= worse;
+  const MinShape first = min_shape(v, a, c), second = min_shape(v, c, b);
+  const auto under_bar = [](const MinShape& s) {
+    return s.quality < kBarQuality || s.min_angle < kBarAngleDeg;
+  };
+  if (!under_bar(first) && !under_bar(second)) return false;
+  return min_shape(a, c, b).quality >= std::min(first.quality, second.quality);
 }
 
 }  // namespace

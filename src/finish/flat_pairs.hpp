@@ -19,8 +19,9 @@ namespace cvtmesh {
 
 // Merges, in one pass, each flat pair whose vertex v is not `kept` (corners) and has two
 // triangles, (v, a, c) and (v, c, b) with a-v and v-b boundary edges, where the angle a-v-b is at
-// least 160°, a-b is no edge yet, and the merged triangle (a, c, b) faces as both did and is
-// shaped at least as well as the worse of them; where a-v and v-b are both in `feature_edges`
+// least 160°, a-b is no edge yet, one of the two is under the quality bar (kBarAngleDeg,
+// kBarQuality), and the merged triangle (a, c, b) faces as both did and is shaped at least as
+// well as the worse of them; where a-v and v-b are both in `feature_edges`
 // (sorted), a-b replaces them there, and where one of them is, or v-c, the pair stays. A pair next
 // to one merged in the same pass waits (none is looked at again). The vertices merged away are left
 // unreferenced. Returns how many pairs were merged.
