@@ -32,8 +32,15 @@ std::optional<std::vector<Triangle>> hole_patch(const TriangleMesh& mesh, const 
     third.emplace_back(q.x, q.y, q.z);
   }
   std::vector<CGAL::Triple<int, int, int>> patch;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(points, third,
-                                                           std::back_inserter(patch));
+  // CGAL searches the loop's 3D Delaunay triangles first and, where they hold no patch, all
+  // triangles, in time cubic in the loop's length: a loop of 1,305 edges, which the last step
+  // opened on a noised slab folded through itself, took 30 s, and was patched again each round.
+  // Longer loops than kMostCubic get the first search only: where it fails, the last step
+  // closes the loop with a fan (remesh/close_holes), and fill_holes leaves it open.
+  constexpr std::size_t kMostCubic = 200;
+  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(
+      points, third, std::back_inserter(patch),
+      CGAL::parameters::do_not_use_cubic_algorithm(points.size() > kMostCubic));
   if (patch.size() + 2 != loop.vertices.size()) return std::nullopt;
   std::vector<Triangle> triangles;
   for (const auto& [a, b, c] : patch)

@@ -4,6 +4,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/exceptions.h>
 
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
@@ -339,14 +340,21 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
   using Hit = AabbTree::Intersection_and_primitive_id<Kernel::Segment_3>::Type;
   std::optional<double> nearest;
   // Each crossing as the tree finds it, in its order (nothing stored: the fit asks for every
-  // vertex, edge midpoint and centroid, every round).
-  tree_->tree.all_intersections(
-      segment, boost::make_function_output_iterator([&](const Hit& hit) {
-        const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
-        if (!point) return;  // the segment lies in a triangle's plane: no crossing there
-        const double t = dot(vec(*point) - p, direction);
-        if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
-      }));
+  // vertex, edge midpoint and centroid, every round). The constructions are in plain doubles,
+  // whose side tests may contradict one another on a triangle nearly flat along the segment;
+  // CGAL then throws ("COLLINEAR is impossible", a noised slab folded through itself at 300
+  // vertices): no crossing is taken then, and the caller's fallback, the nearest point, serves.
+  try {
+    tree_->tree.all_intersections(
+        segment, boost::make_function_output_iterator([&](const Hit& hit) {
+          const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
+          if (!point) return;  // the segment lies in a triangle's plane: no crossing there
+          const double t = dot(vec(*point) - p, direction);
+          if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
+        }));
+  } catch (const CGAL::Failure_exception&) {
+    return std::nullopt;
+  }
   return nearest;
 }
 

@@ -274,6 +274,11 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
 
 }  // namespace
 
+bool crosses_itself_widely(std::size_t crossing, std::size_t triangles) {
+  constexpr std::size_t kWidely = 20;  // one triangle in this many
+  return crossing > 0 && kWidely * crossing >= triangles;
+}
+
 // The paper's loop (§2 Theorem 1, §4.4): check the extraction, insert seeds where it fails the
 // topological ball property, extract again; the best round is returned, and the pipeline's last
 // step (finish_manifold) mends what the rounds leave.
@@ -316,6 +321,8 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       if (stops.pinned() || rounds == 0 || kept.best().assessment.topology_kept ||
           !m.surface_topology.is_manifold())
         break;
+      crossings.get();  // searched here if no round needed it
+      if (crosses_itself_widely(crossings.count(), m.surface.triangles.size())) break;
       stops.pin(round);
       const Round& best = kept.best();
       output = best.output;

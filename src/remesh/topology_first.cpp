@@ -9,6 +9,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/feature_seeds.hpp"
+#include "remesh/mend_topology.hpp"
 #include "remesh/pipeline.hpp"
 #include "system/elapsed.hpp"
 
@@ -137,7 +138,9 @@ UnitRemesh remesh_unit_topology_first(const TriangleMesh& input, const RemeshSet
   UnitRemesh best = first_remesh(input, used);
   int tries = 1;
   if (settings.mode == CvtMode::rcvt || best.result.time_limit_reached ||
-      topology_kept(best.result) == 2)
+      topology_kept(best.result) == 2 ||
+      crosses_itself_widely(best.result.input_crossing_triangles,
+                            best.result.input_topology.triangles))
     return best;
   // First the sharp creases give way, if tracing them is what cost the topology.
   if (used.features.sharp_edges) {
