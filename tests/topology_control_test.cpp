@@ -1346,7 +1346,6 @@ TEST(HardCases, FewAndManyVertices) {
   expect_valid_remesh(t, 20000);
 }
 
-}  // namespace
 // A slab thinner than the noise on it: its two faces pass through each other over much of their
 // area, so that no count or sizing gives the output the input's topology. The rounds are not
 // pinned and the remesh is not tried again (blade.off with noise of 5% of an edge, 28% of its
@@ -1385,5 +1384,7 @@ TEST(HardCases, CrossingWidelyIsATwentiethOfTheTriangles) {
   EXPECT_TRUE(crosses_itself_widely(5, 100));
   EXPECT_TRUE(crosses_itself_widely(1, 1));
 }
+
+}  // namespace
 
 }  // namespace cvtmesh

@@ -73,7 +73,7 @@ BarShapes bar_shapes(const TriangleMesh& m, const std::vector<NarrowAngle>& narr
       shapes.ratio_at = std::min(shapes.ratio_at, s.min_angle / input);
       continue;
     }
-    shapes.under += s.min_angle < kBarAngleDeg || s.quality < kBarQuality;
+    shapes.under += under_bar(s);
     shapes.away.add(WorstShape{s.quality, s.min_angle / 60});
   }
   shapes.worst_all = all.score();

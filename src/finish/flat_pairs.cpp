@@ -61,9 +61,6 @@ bool worth_merging(const TriangleMesh& mesh, const FlatPair& p) {
   const Vec3 merged = cross(c - a, b - a);
   if (dot(merged, cross(a - v, c - v)) <= 0 || dot(merged, cross(c - v, b - v)) <= 0) return false;
   const MinShape first = min_shape(v, a, c), second = min_shape(v, c, b);
-  const auto under_bar = [](const MinShape& s) {
-    return s.quality < kBarQuality || s.min_angle < kBarAngleDeg;
-  };
   if (!under_bar(first) && !under_bar(second)) return false;
   return min_shape(a, c, b).quality >= std::min(first.quality, second.quality);
 }

@@ -12,6 +12,11 @@ namespace cvtmesh {
 // The quality promise's bar (issue 18 item 6): θmin 30° and Q 0.6, away from narrow input angles.
 inline constexpr double kBarAngleDeg = 30, kBarQuality = 0.6;
 
+// Whether a triangle of shape `s` is under the bar.
+inline bool under_bar(const MinShape& s) {
+  return s.min_angle < kBarAngleDeg || s.quality < kBarQuality;
+}
+
 struct WorstShape {
   double quality = 1;
   double angle = 1;
