@@ -209,7 +209,9 @@ struct RemeshResult {
   std::size_t shape_flips = 0, shape_moves = 0;
   // ... and, where neither helps, short edges of badly shaped triangles collapsed: a surface
   // vertex, or a curve vertex along its curve, merged into its neighbour (V - 1, E - 3, F - 2:
-  // the topology stays); at most 1% of the vertices.
+  // the topology stays); at most 1% of the vertices. Counted with them, and past that cap: edges
+  // of no length (both ends at one point, where a folded input lies on itself) collapsed last of
+  // all, so that no triangle of no area is left.
   std::size_t short_edges_collapsed = 0;
   // Surface vertices moved onto an input crease that the output does not trace as a feature,
   // before the fit (finish/snap_to_creases): a low-poly input remeshed finer keeps its edges.

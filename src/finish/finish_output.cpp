@@ -12,6 +12,7 @@
 #include "features/edge_uses.hpp"
 #include "finish/bar_shapes.hpp"
 #include "finish/best_round.hpp"
+#include "finish/coincident_edges.hpp"
 #include "finish/fit_surface.hpp"
 #include "finish/flat_ears.hpp"
 #include "finish/flat_pairs.hpp"
@@ -316,9 +317,12 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   // Surface vertices only: a feature or corner vertex stays on its curve.
   if (settings.fit_rounds > 0)
     result.vertices_snapped = snap_to_creases(result.mesh, surface, features, projector, removable);
-  const SurfaceFit fit =
-      fit_to_surface(result.mesh, projector, std::move(removable), settings.fit_rounds);
+  const SurfaceFit fit = fit_to_surface(result.mesh, projector, removable, settings.fit_rounds);
   result.vertices_fitted = fit.vertices_moved;
+  // Last of all, once no step moves a vertex again (issue 18: no triangle of no area).
+  const std::size_t coincident = collapse_coincident_edges(result.mesh, result.feature_edges);
+  result.short_edges_collapsed += coincident;
+  if (coincident > 0) drop_unused_vertices(result, removable);
 }
 
 }  // namespace cvtmesh

@@ -11,8 +11,8 @@ namespace cvtmesh {
 
 namespace {
 
-// cos 160°: an angle at least this wide has a cosine at most this.
-const double kFlatEarCos = std::cos(160 * M_PI / 180);
+// An angle at least kFlatBoundaryAngleDeg wide has a cosine at most this.
+const double kFlatEarCos = std::cos(kFlatBoundaryAngleDeg * M_PI / 180);
 // cos 120°: the same for an ear whose vertex is no seed. A cell in two pieces along a boundary
 // gives its far piece a vertex there, between two boundary seeds whose link it takes; without it
 // the boundary runs along that link, as between any two seeds (alligator.obj of a public test set:

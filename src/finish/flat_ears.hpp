@@ -17,6 +17,10 @@
 
 namespace cvtmesh {
 
+// A boundary angle at least this wide (degrees) is flat: a flat ear's, and a flat pair's
+// (finish/flat_pairs).
+inline constexpr double kFlatBoundaryAngleDeg = 160;
+
 // Removes, until none is left, every ear whose angle at its vertex is at least 160° (120° where
 // that vertex is `seedless`: a cell's far piece, no seed), and every ear whose normal turns more
 // than 120° from its neighbour's across its third edge (folded back over it), unless that vertex

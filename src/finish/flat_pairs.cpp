@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "features/edge_uses.hpp"
+#include "finish/flat_ears.hpp"
 #include "finish/worst_shape.hpp"
 #include "quality/min_shape.hpp"
 
@@ -13,8 +14,8 @@ namespace cvtmesh {
 
 namespace {
 
-// cos 160°: a boundary angle at least this wide has a cosine at most this (as flat_ears has it).
-const double kFlatPairCos = std::cos(160 * M_PI / 180);
+// A boundary angle at least kFlatBoundaryAngleDeg wide has a cosine at most this.
+const double kFlatPairCos = std::cos(kFlatBoundaryAngleDeg * M_PI / 180);
 
 // A flat pair: the triangles `first` = (v, a, c) and `second` = (v, c, b), as stored.
 struct FlatPair {

@@ -235,12 +235,7 @@ class ShapeImprover {
   }
 
   // Drops the triangles that collapses took away (their vertices stay, unused).
-  void finish() {
-    std::size_t kept = 0;
-    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
-      if (!gone_[t]) mesh_.triangles[kept++] = mesh_.triangles[t];
-    mesh_.triangles.resize(kept);
-  }
+  void finish() { erase_marked_triangles(mesh_, gone_); }
 
  private:
   // Tries `try_one(a, b)` on the edges a→b of triangle t in turn, until one flips.

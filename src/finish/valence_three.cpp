@@ -91,11 +91,8 @@ std::size_t remove_valence_three(TriangleMesh& mesh, const std::vector<bool>& re
     touched[v] = touched[abc[0]] = touched[abc[1]] = touched[abc[2]] = true;
     ++removed;
   }
-  std::vector<Triangle> kept;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (!gone[t]) kept.push_back(mesh.triangles[t]);
-  kept.insert(kept.end(), added.begin(), added.end());
-  mesh.triangles = std::move(kept);
+  erase_marked_triangles(mesh, gone);
+  mesh.triangles.insert(mesh.triangles.end(), added.begin(), added.end());
   return removed;
 }
 
