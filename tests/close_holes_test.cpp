@@ -11,6 +11,7 @@
 
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
+#include "geometry/hole_patch.hpp"
 #include "geometry/self_crossings.hpp"
 #include "remesh/close_holes.hpp"
 #include "support/shapes.hpp"
@@ -200,6 +201,48 @@ TriangleMesh figure_eight_tube(double a, double r, int nu, int nv) {
 
 std::size_t count_true(const std::vector<bool>& flags) {
   return static_cast<std::size_t>(std::count(flags.begin(), flags.end(), true));
+}
+
+TEST(HolePatch, ThePatchOfALoopInAPlaneIsTheSameOnEveryCall) {
+  // A loop of the noised slab's side wall (x = 0.5, its points a rounding off the plane), and
+  // each edge's third vertex, in the wall too: CGAL's search over the loop's 3D Delaunay
+  // triangles gave this loop different patches from one call to the next.
+  TriangleMesh m;
+  m.vertices = {
+      {0x1p-1, -0x1.13a56bffb0109p-2, 0x1.e3eb1669758c2p-9},
+      {0x1.fffffffffffffp-2, -0x1.0a39289c09b28p-2, 0x1.fb5a8bed530a7p-10},
+      {0x1p-1, -0x1.f6ce93b028fc7p-3, 0x1.83bfa124bbbefp-9},
+      {0x1p-1, -0x1.f8d7b1c60e73dp-3, 0x1.c17d1a36cb4cp-8},
+      {0x1p-1, -0x1.f7b6ead8c3de2p-3, 0x1.5a4ba275d9c4bp-7},
+      {0x1p-1, -0x1.061d464e98c2ep-2, 0x1.8e888bf93e4f9p-7},
+      {0x1.fffffffffffffp-2, -0x1.12e48e5d6d5aep-2, 0x1.3c876379eefep-7},
+      {0x1p-1, -0x1.12c7f8185c45dp-2, 0x1.4a565361d1681p-8},
+      {0x1p-1, -0x1.1bbf666e5c91ep-2, 0x1.0a6acf84a1bfcp-8},
+      {0x1p-1, -0x1.14ae562b3ddb7p-2, 0x1.de172629605cdp-8},
+      {0x1p-1, -0x1.062312a7861d5p-2, 0x1.a9ac642489d83p-8},
+      {0x1p-1, -0x1.062312a7861d5p-2, 0x1.a9ac642489d83p-8},
+      {0x1.fffffffffffffp-2, -0x1.e0821d6e10c1dp-3, 0x1.062642739b0aep-8},
+      {0x1p-1, -0x1.e2da5b696b85ap-3, 0x1.8e9f307c9986cp-7},
+      {0x1p-1, -0x1.fae4f895b5191p-3, 0x1.0eac21af20ac5p-6},
+      {0x1p-1, -0x1.095b124d10422p-2, 0x1.09d51852baa6ep-6},
+      {0x1p-1, -0x1.1bbf666e5c91ep-2, 0x1.0a6acf84a1bfcp-8},
+      {0x1.fffffffffffffp-2, -0x1.12e48e5d6d5aep-2, 0x1.3c876379eefep-7},
+      {0x1p-1, -0x1.1dcf82d139fa3p-2, 0x1.01da264505c7fp-7},
+      {0x1p-1, -0x1.180d3ff52673p-2, -0x1.ae17eb167dd2p-11},
+  };
+  HoleLoop loop;
+  for (Index i = 0; i < 10; ++i) {
+    loop.vertices.push_back(i);
+    loop.opposite.push_back(10 + i);
+  }
+  const std::optional<std::vector<Triangle>> first = hole_patch(m, loop);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->size(), 8u);
+  std::vector<std::vector<char>> held;  // the heap moves on between calls
+  for (int call = 0; call < 20; ++call) {
+    held.emplace_back(std::size_t{1000} << (call % 12));
+    EXPECT_EQ(hole_patch(m, loop), first) << "call " << call;
+  }
 }
 
 TEST(SelfCrossings, FoundWhereSheetsCrossAndNowhereElse) {
