@@ -16,8 +16,9 @@ namespace cvtmesh {
 // Collapses each edge of `mesh` whose ends are one point to round-off (near_point_tolerance)
 // where that keeps the topology: one end merged into the other, the edge's triangles gone, the
 // link condition held (the ends' only common neighbours are the edge's opposite corners, each
-// left with three triangles or more, and no triangle made twice). `features` (sorted edges)
-// are renamed alike. The vertex that goes is left unused. Returns how many edges went.
+// left with three triangles or more, two at a boundary edge, and no triangle made twice).
+// `features` (sorted edges) are renamed alike. The vertex that goes is left unused. Returns how
+// many edges went.
 std::size_t collapse_coincident_edges(TriangleMesh& mesh, std::vector<Edge>& features);
 
 }  // namespace cvtmesh

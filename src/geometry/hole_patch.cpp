@@ -32,14 +32,15 @@ std::optional<std::vector<Triangle>> hole_patch(const TriangleMesh& mesh, const 
     third.emplace_back(q.x, q.y, q.z);
   }
   std::vector<CGAL::Triple<int, int, int>> patch;
-  // CGAL's search over the loop's 3D Delaunay triangles alone gives different patches for the
-  // same loop from one call to the next where the loop's points are degenerate (coplanar or
-  // cospherical: a hole in a planar face), so outputs differed from run to run; its search over
-  // all triangles, which it falls back to, is deterministic, and optimal for CGAL's weight, in
-  // time cubic in the loop's length. It takes loops of up to kMostCubic edges: a loop of 1,305
-  // edges, which the last step opened on a noised slab folded through itself, took 30 s, and was
-  // patched again each round. Longer loops get the Delaunay search: where it fails, the last
-  // step closes the loop with a fan (remesh/close_holes), and fill_holes leaves it open.
+  // CGAL's search over the loop's 3D Delaunay triangles alone gave a loop whose points lie in a
+  // plane (a hole in a flat wall) different patches from one call to the next, as the heap went
+  // (not when built with AddressSanitizer, whose heap hands out addresses in order), so outputs
+  // differed from run to run; its search over all triangles, which it falls back to, is
+  // deterministic, and optimal for CGAL's weight, in time cubic in the loop's length. It takes
+  // loops of up to kMostCubic edges: a loop of 1,305 edges, which the last step opened on a noised
+  // slab folded through itself, took 30 s, and was patched again each round. Longer loops get the
+  // Delaunay search: where it fails, the last step closes the loop with a fan (remesh/close_holes),
+  // and fill_holes leaves it open.
   constexpr std::size_t kMostCubic = 200;
   const bool cubic = points.size() <= kMostCubic;
   CGAL::Polygon_mesh_processing::triangulate_hole_polyline(
