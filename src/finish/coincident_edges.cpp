@@ -63,13 +63,20 @@ class EdgeCollapser {
   void finish() { erase_marked_triangles(mesh_, gone_); }
 
  private:
-  // The vertices sharing a triangle with `v`, sorted.
-  std::vector<Index> neighbours(Index v) const {
+  // The other corners of `v`'s triangles, sorted, each once per triangle: a neighbour across an
+  // edge of one triangle comes once.
+  std::vector<Index> star_corners(Index v) const {
     std::vector<Index> out;
     for (const Index t : around_[v])
       for (const Index w : mesh_.triangles[t])
         if (w != v) out.push_back(w);
     std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The vertices sharing a triangle with `v`, sorted.
+  std::vector<Index> neighbours(Index v) const {
+    std::vector<Index> out = star_corners(v);
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
@@ -83,17 +90,11 @@ class EdgeCollapser {
 
   // Whether `v` ends an edge of one triangle.
   bool on_boundary(Index v) const {
-    std::vector<Index> ends;
-    for (const Index t : around_[v])
-      for (const Index w : mesh_.triangles[t])
-        if (w != v) ends.push_back(w);
-    std::sort(ends.begin(), ends.end());
-    for (std::size_t i = 0; i < ends.size();) {
-      std::size_t j = i;
-      while (j < ends.size() && ends[j] == ends[i]) ++j;
-      if (j == i + 1) return true;
-      i = j;
-    }
+    const std::vector<Index> corners = star_corners(v);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      if ((i == 0 || corners[i - 1] != corners[i]) &&
+          (i + 1 == corners.size() || corners[i + 1] != corners[i]))
+        return true;
     return false;
   }
 
