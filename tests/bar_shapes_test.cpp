@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "finish/bar_shapes.hpp"
+#include "finish/worst_shape.hpp"
 #include "quality/min_shape.hpp"
 
 namespace cvtmesh {
@@ -27,6 +29,35 @@ TriangleMesh three_triangles() {
 MinShape shape_of(const TriangleMesh& m, std::size_t t) {
   const auto [a, b, c] = m.corners(t);
   return min_shape(a, b, c);
+}
+
+// WorstShape::add_above, which the shape searches use to stop measuring a place at its first
+// triangle that rules it out: where it says the score stays above the bar, the shape is add's to
+// the bit; where it says no, add's score is at the bar or under it.
+TEST(WorstShape, AddAboveAddsAsAddDoesOrSaysTheScoreFellToTheBar) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  const auto point = [&] { return Vec3{coordinate(random), coordinate(random), 0.1}; };
+  std::size_t fell = 0, stayed = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double bar = 0.1 * (trial % 8);
+    WorstShape full, above;
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 a = point(), b = point(), c = point();
+      full.add(a, b, c);
+      if (!above.add_above(a, b, c, bar)) {
+        EXPECT_LE(full.score(), bar);
+        ++fell;
+        break;
+      }
+      ++stayed;
+      EXPECT_EQ(above.quality, full.quality);
+      EXPECT_EQ(above.angle, full.angle);
+      EXPECT_GT(full.score(), bar);
+    }
+  }
+  EXPECT_GT(fell, 0u);
+  EXPECT_GT(stayed, 0u);
 }
 
 TEST(BarShapes, TrianglesAtANarrowAngleAreJudgedAgainstItAndTheRestByTheBar) {

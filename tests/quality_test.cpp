@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "cvtmesh/quality.hpp"
 #include "quality/min_shape.hpp"
@@ -101,6 +102,29 @@ TEST(MinShape, IsExactlyTriangleShapesQualityAndSmallestAngle) {
     const MinShape least = min_shape(a, b, c);
     EXPECT_EQ(least.quality, full.quality);
     EXPECT_EQ(least.min_angle, full.min_angle);
+  }
+}
+
+TEST(MinShape, IfAboveIsMinShapeWhereQIsAboveTheBarAndNothingElse) {
+  // The shape searches reject places by Q before the arctangent: where a shape is returned, it
+  // must be min_shape's to the bit, and nothing must be returned only where Q is at the bar or
+  // under it (a triangle with a repeated corner has Q 0).
+  const std::array<std::array<Vec3, 3>, 5> triangles{{
+      {{{0, 0, 0}, {1, 0.2, 0}, {0.3, 0.9, 0.1}}},
+      {{{0, 0, 0}, {10, 0, 0}, {10.01, 0.02, 0}}},
+      {{{0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}}},
+      {{{0, 0, 0}, {0, 0, 0}, {1, 0, 0}}},
+      {{{1, 2, 3}, {1.5, 2.1, 2.7}, {0.7, 2.9, 3.3}}},
+  }};
+  for (const auto& [a, b, c] : triangles) {
+    const MinShape least = min_shape(a, b, c);
+    for (const double bar : {-1.0, 0.0, 0.3, least.quality, std::nextafter(least.quality, 0.0)}) {
+      const std::optional<MinShape> above = min_shape_if_above(a, b, c, bar);
+      ASSERT_EQ(above.has_value(), least.quality > bar) << "bar " << bar;
+      if (!above) continue;
+      EXPECT_EQ(above->quality, least.quality);
+      EXPECT_EQ(above->min_angle, least.min_angle);
+    }
   }
 }
 

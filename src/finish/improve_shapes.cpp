@@ -248,9 +248,13 @@ class ShapeImprover {
     return false;
   }
 
-  // The worst shape of the triangles `ts`; of the whole mesh; of the triangles at `v`.
+  // The worst shape of the triangles `ts`, where its score is above `bar`; nothing where it is
+  // not, found at the first triangle that puts it there (the searches below judge places by the
+  // thousand, and most places are no better than the best found: WorstShape::better_than asks
+  // for a higher score). The same shape as measuring them all, bit for bit, where one is
+  // returned.
   template <class Triangles>
-  WorstShape worst_of(const Triangles& ts) const {
+  std::optional<WorstShape> worst_of_above(const Triangles& ts, double bar) const {
     WorstShape worst;
     for (Index t : ts) {
       const auto [a, b, c] = mesh_.corners(t);
@@ -260,10 +264,17 @@ class ShapeImprover {
           input = input > 0 ? std::min(input, narrow_at_[v]) : narrow_at_[v];
       if (input > 0)
         worst.add(WorstShape{1, at_narrow_score(min_shape(a, b, c).min_angle / input)});
-      else
-        worst.add(a, b, c);
+      else if (!worst.add_above(a, b, c, bar))
+        return std::nullopt;
+      if (!(worst.score() > bar)) return std::nullopt;
     }
+    if (!(worst.score() > bar)) return std::nullopt;  // no triangle: score 1
     return worst;
+  }
+  // The worst shape of the triangles `ts`; of the whole mesh; of the triangles at `v`.
+  template <class Triangles>
+  WorstShape worst_of(const Triangles& ts) const {
+    return *worst_of_above(ts, -std::numeric_limits<double>::infinity());
   }
   WorstShape mesh_shape() const {
     WorstShape worst;
@@ -272,6 +283,14 @@ class ShapeImprover {
     return worst;
   }
   WorstShape star_shape(Index v) const { return worst_of(around_[v]); }
+  // Whether the triangles at `v` are better than `o` (WorstShape::better_than); if so, their shape
+  // goes into `shape`.
+  bool star_better_than(Index v, const WorstShape& o, WorstShape& shape) const {
+    const std::optional<WorstShape> s = worst_of_above(around_[v], o.score());
+    if (!s || !s->better_than(o, floor_)) return false;
+    shape = *s;
+    return true;
+  }
 
   bool bad(Index t) const {
     if (!active_.empty() && std::none_of(mesh_.triangles[t].begin(), mesh_.triangles[t].end(),
@@ -607,8 +626,12 @@ class ShapeImprover {
     for (Index v : r.vertices) move(v);
     for (Index v : core) move(v);
     WorstShape after;
-    for (Index v : r.vertices) after.add(star_shape(v));
-    if (after.better_than(r.before, floor_)) {
+    const bool better = std::ranges::all_of(r.vertices, [&](Index v) {
+      const std::optional<WorstShape> s = worst_of_above(around_[v], r.before.score());
+      if (s) after.add(*s);
+      return s && after.score() > r.before.score();
+    });
+    if (better && after.better_than(r.before, floor_)) {
       done.moves += moves;
       return true;
     }
@@ -779,8 +802,8 @@ class ShapeImprover {
     // Where v would do better than `best`, with nothing folded or taken off the surface.
     const auto better_at = [&](const Vec3& q) {
       p[v] = q;
-      const WorstShape now = star_shape(v);
-      const bool better = now.better_than(best, floor_) && keeps_surface(v, normals);
+      WorstShape now;
+      const bool better = star_better_than(v, best, now) && keeps_surface(v, normals);
       p[v] = from;
       if (better) best = now;
       return better;
@@ -788,7 +811,8 @@ class ShapeImprover {
     // Whether v's triangles alone would do better with v at q: cheap, no projection.
     const auto promising = [&](const Vec3& q) {
       p[v] = q;
-      const bool better = star_shape(v).better_than(best, floor_);
+      WorstShape now;
+      const bool better = star_better_than(v, best, now);
       p[v] = from;
       return better;
     };

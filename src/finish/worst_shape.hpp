@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 
 #include "quality/min_shape.hpp"
 
@@ -25,6 +26,16 @@ struct WorstShape {
     const MinShape s = min_shape(a, b, c);
     quality = std::min(quality, s.quality);
     angle = std::min(angle, s.min_angle / 60);
+  }
+  // As add, where the score stays above `bar`. Returns false where it falls to `bar` or under,
+  // having measured no more than it must (its Q alone, where that is enough): better_than then
+  // fails against any shape of score `bar`, whatever else is added, and the caller drops this one.
+  bool add_above(const Vec3& a, const Vec3& b, const Vec3& c, double bar) {
+    const std::optional<MinShape> s = min_shape_if_above(a, b, c, bar);
+    if (!s) return false;
+    quality = std::min(quality, s->quality);
+    angle = std::min(angle, s->min_angle / 60);
+    return score() > bar;
   }
   void add(const WorstShape& o) {
     quality = std::min(quality, o.quality);

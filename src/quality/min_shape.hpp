@@ -3,6 +3,8 @@
 // (on corpus/femur.off at 1k, arctangents were a tenth of the run).
 #pragma once
 
+#include <optional>
+
 #include "cvtmesh/mesh.hpp"
 
 namespace cvtmesh {
@@ -13,5 +15,10 @@ struct MinShape {
 };
 
 MinShape min_shape(const Vec3& a, const Vec3& b, const Vec3& c);
+
+// min_shape where Q is above `quality_bar`; nothing where it is not, found before the arctangent
+// (the costly part): a search for a better place rejects many by Q alone.
+std::optional<MinShape> min_shape_if_above(const Vec3& a, const Vec3& b, const Vec3& c,
+                                           double quality_bar);
 
 }  // namespace cvtmesh

@@ -55,6 +55,14 @@ MinShape min_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
   return {m.quality, angle_facing(m, std::min({m.la, m.lb, m.lc}), a, b, c)};
 }
 
+std::optional<MinShape> min_shape_if_above(const Vec3& a, const Vec3& b, const Vec3& c,
+                                           double quality_bar) {
+  const Measured m = measured(a, b, c);
+  if (has_zero_edge(m)) return quality_bar < 0 ? std::optional(MinShape{0, 0}) : std::nullopt;
+  if (m.quality <= quality_bar) return std::nullopt;
+  return MinShape{m.quality, angle_facing(m, std::min({m.la, m.lb, m.lc}), a, b, c)};
+}
+
 QualityReport measure_quality(const TriangleMesh& given) {
   // Measured at about unit size, exactly scaled (issue 22): the areas of a mesh in nanometres
   // would underflow. Shapes do not depend on the scale; edge lengths are scaled back.
