@@ -180,15 +180,18 @@ class ShapeImprover {
         ++done.flips;
         changed = true;
       }
-    std::vector<Index> candidates;
+    // The vertices of the bad triangles and their neighbours, in order: marked, as they come in
+    // dozens of times each (sorting them all was a twentieth of a remesh that keeps thousands of
+    // bad triangles, a scan with hundreds of small holes).
+    std::vector<bool> wanted(mesh_.vertices.size(), false);
     for (Index t = 0; t < mesh_.triangles.size(); ++t)
       if (!gone_[t] && bad(t))
         for (Index v : mesh_.triangles[t])
           for (Index s : around_[v])
-            candidates.insert(candidates.end(), mesh_.triangles[s].begin(),
-                              mesh_.triangles[s].end());
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+            for (Index w : mesh_.triangles[s]) wanted[w] = true;
+    std::vector<Index> candidates;
+    for (Index v = 0; v < wanted.size(); ++v)
+      if (wanted[v]) candidates.push_back(v);
     for (Index v : candidates)
       if (support_[v].kind != VertexSupport::Kind::fixed && try_move(v)) {
         ++done.moves;
