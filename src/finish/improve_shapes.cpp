@@ -253,7 +253,7 @@ class ShapeImprover {
 
   // The worst shape of the triangles `ts`, where its score is above `bar`; nothing where it is
   // not, found at the first triangle that puts it there (the searches below judge places by the
-  // thousand, and most places are no better than the best found: WorstShape::better_than asks
+  // thousand, and many places are no better than the best found: WorstShape::better_than asks
   // for a higher score). The same shape as measuring them all, bit for bit, where one is
   // returned.
   template <class Triangles>
@@ -265,11 +265,12 @@ class ShapeImprover {
       for (const Index v : mesh_.triangles[t])
         if (v < narrow_at_.size() && narrow_at_[v] > 0)
           input = input > 0 ? std::min(input, narrow_at_[v]) : narrow_at_[v];
-      if (input > 0)
+      if (input > 0) {
         worst.add(WorstShape{1, at_narrow_score(min_shape(a, b, c).min_angle / input)});
-      else if (!worst.add_above(a, b, c, bar))
+        if (!(worst.score() > bar)) return std::nullopt;
+      } else if (!worst.add_above(a, b, c, bar)) {
         return std::nullopt;
-      if (!(worst.score() > bar)) return std::nullopt;
+      }
     }
     if (!(worst.score() > bar)) return std::nullopt;  // no triangle: score 1
     return worst;
