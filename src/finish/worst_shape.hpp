@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 
 #include "quality/min_shape.hpp"
@@ -23,9 +24,7 @@ struct WorstShape {
   double angle = 1;
 
   void add(const Vec3& a, const Vec3& b, const Vec3& c) {
-    const MinShape s = min_shape(a, b, c);
-    quality = std::min(quality, s.quality);
-    angle = std::min(angle, s.min_angle / 60);
+    add_above(a, b, c, -std::numeric_limits<double>::infinity());
   }
   // As add, where the score stays above `bar`. Returns false where it falls to `bar` or under,
   // having measured no more than it must (its Q alone, where that is enough): better_than then

@@ -50,9 +50,7 @@ TriangleShape triangle_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 MinShape min_shape(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Measured m = measured(a, b, c);
-  if (has_zero_edge(m)) return {0, 0};
-  return {m.quality, angle_facing(m, std::min({m.la, m.lb, m.lc}), a, b, c)};
+  return *min_shape_if_above(a, b, c, -std::numeric_limits<double>::infinity());
 }
 
 std::optional<MinShape> min_shape_if_above(const Vec3& a, const Vec3& b, const Vec3& c,
