@@ -6,15 +6,26 @@ scales (10^-3 to 10^3) and moves it at random, damages it as the round's number 
 remeshes it with the defaults at a random count (300, 1.5k, 4k or 9k), with --adaptive on about a
 third of the runs, another --seed on half, one thread on a third:
 
-    round % 3 == 0   noise: every vertex moved by 5% of the median edge length
-    round % 3 == 1   dropouts: 1% of the triangles removed, apart from one another and from the
+    round % 6 == 0   noise: every vertex moved by 5% of the median edge length
+    round % 6 == 1   dropouts: 1% of the triangles removed, apart from one another and from the
                      boundary (each a hole of one triangle; the input stays a manifold)
-    round % 3 == 2   both, milder: noise of 2%, 0.3% of the triangles removed
+    round % 6 == 2   both, milder: noise of 2%, 0.3% of the triangles removed
+    round % 6 == 3   a soup, as a vision pipeline or an STL export gives: every face with
+                     vertices of its own, one face in ten turned the other way
+    round % 6 == 4   slivers, as a CAD tessellation has: 3% of the edges inside the surface
+                     split at a point 0.2-2% of their length from one end (each of the edge's
+                     two triangles in two: a needle and a sliver), the surface unchanged
+    round % 6 == 5   holes: three discs removed, each the triangles at a vertex and its
+                     neighbours (about 20), apart from one another and from the boundary
+
+(Until 2026-12-05 the kinds went by round % 3: rounds 3, 4 and 5 that earlier notes cite were
+noise, dropouts and both.)
 
 A run fails when cvtmesh exits with an error, when the output has non-manifold edges or vertices
 where the input has none or a triangle of no area (an angle under 0.001°), or when its topology
-(components, Euler characteristic, boundary loops) differs from the input's. Runs over --slow
-seconds are listed too. The same round always makes the same inputs and options (a mesh's
+(components, Euler characteristic, boundary loops) differs from the input's; a soup's also when
+it differs from that of the mesh it was made from, repaired, where that is a manifold (the
+repair must stitch it back; checked without --options). Runs over --slow seconds are listed too. The same round always makes the same inputs and options (a mesh's
 randomness depends on the round and its place in the full list, not on --only), so a failure is
 reproduced by its round and name; --keep DIR keeps the failing inputs there.
 
@@ -81,27 +92,93 @@ def damaged(vertices, faces, round_number, rng):
     points = vertices @ rotation.T * scale + shift
     triangles = np.array([f[:3] for f in faces if len(f) >= 3])
     edge = np.median(np.linalg.norm(points[triangles[:, 0]] - points[triangles[:, 1]], axis=1))
-    mode = round_number % 3
-    noise = {0: 0.05, 1: 0.0, 2: 0.02}[mode]
+    mode = round_number % 6
+    noise = {0: 0.05, 2: 0.02}.get(mode, 0.0)
     if noise > 0:
         points = points + rng.normal(size=points.shape) * noise * edge
-    rate = {0: 0.0, 1: 0.01, 2: 0.003}[mode]
+    uses = {}
+    for f in faces:
+        for k in range(len(f)):
+            e = tuple(sorted((f[k], f[(k + 1) % len(f)])))
+            uses[e] = uses.get(e, 0) + 1
+    # Vertices on the boundary or a non-manifold edge: no damage touches them.
+    touched = {v for e, n in uses.items() if n != 2 for v in e}
+    rate = {1: 0.01, 2: 0.003}.get(mode, 0.0)
     if rate > 0:
-        uses = {}
-        for f in faces:
-            for k in range(len(f)):
-                e = tuple(sorted((f[k], f[(k + 1) % len(f)])))
-                uses[e] = uses.get(e, 0) + 1
-        # Vertices on the boundary or a non-manifold edge, then each hole's: no hole touches them.
-        touched = {v for e, n in uses.items() if n != 2 for v in e}
         kept = []
         for f, draw in zip(faces, rng.random(len(faces))):
             if draw < rate and len(f) == 3 and not touched.intersection(f):
-                touched.update(f)
+                touched.update(f)  # each hole's too: no two holes touch
             else:
                 kept.append(f)
         faces = kept
+    if mode == 3:
+        soup, points_of = [], []
+        for f, turned in zip(faces, rng.random(len(faces)) < 0.1):
+            first = len(points_of)
+            points_of.extend(f)
+            soup.append(list(range(first, first + len(f)))[::-1 if turned else 1])
+        points, faces = points[points_of], soup
+    if mode == 4:
+        faces = split_edges(points, faces, uses, touched, rng)
+        points = faces.pop()
+    if mode == 5:
+        faces = cut_discs(faces, touched, rng)
     return points, faces
+
+
+def split_edges(points, faces, uses, touched, rng):
+    """Mode 4's faces, and last the points with the new ones: 3% of the edges between two
+    triangles split near an end, no triangle split twice."""
+    by_edge = {}
+    for i, f in enumerate(faces):
+        if len(f) == 3:
+            for k in range(3):
+                by_edge.setdefault(tuple(sorted((f[k], f[(k + 1) % 3]))), []).append(i)
+    points = list(points)
+    split = set()
+    out = [list(f) for f in faces]
+    for (a, b), pair in by_edge.items():
+        if len(pair) != 2 or uses[(a, b)] != 2 or split.intersection(pair) or rng.random() >= 0.03:
+            continue
+        if a in touched and b in touched:
+            continue
+        t = rng.uniform(0.002, 0.02)
+        p = len(points)
+        points.append(points[a] + t * (points[b] - points[a]))
+        for i in pair:
+            f = faces[i]
+            k = next(k for k in range(3) if {f[k], f[(k + 1) % 3]} == {a, b})
+            u, v, w = f[k], f[(k + 1) % 3], f[(k + 2) % 3]
+            out[i] = [u, p, w]
+            out.append([p, v, w])
+        split.update(pair)
+    out.append(np.array(points))
+    return out
+
+
+def cut_discs(faces, touched, rng):
+    """Mode 5's faces: three discs of triangles removed, each the triangles at a random vertex
+    and its neighbours, apart from one another and from `touched`."""
+    around = {}
+    for i, f in enumerate(faces):
+        for v in f:
+            around.setdefault(v, []).append(i)
+    neighbours = {v: {w for i in ts for w in faces[i]} for v, ts in around.items()}
+    vertices = list(around)
+    gone, discs = set(), 0
+    for pick in rng.permutation(len(vertices))[:200]:
+        disc = {i for w in neighbours[vertices[pick]] for i in around[w]}
+        corners = {w for i in disc for w in faces[i]}
+        if touched.intersection(corners) or any(len(faces[i]) != 3 for i in disc):
+            continue
+        gone.update(disc)
+        # Its corners and one ring more: the next disc stays apart from this one.
+        touched.update(w for c in corners for w in neighbours[c])
+        discs += 1
+        if discs == 3:
+            break
+    return [f for i, f in enumerate(faces) if i not in gone]
 
 
 def write_off(path, points, faces):
@@ -114,6 +191,18 @@ def write_off(path, points, faces):
 def quality(cli, path):
     r = subprocess.run([cli, "quality", str(path), "--json"], capture_output=True, text=True)
     return json.loads(r.stdout) if r.returncode == 0 else {}
+
+
+def stitched_back(cli, path, tmp, report):
+    """Whether a soup's output (`report`) has the topology of the mesh at `path`, repaired; true
+    where that is not a manifold (a soup of it has no edge of three triangles to keep)."""
+    repaired = Path(tmp) / "repaired.off"
+    subprocess.run([cli, "repair", str(path), str(repaired)], capture_output=True, text=True)
+    q = quality(cli, repaired)
+    if q.get("nonmanifold_edges", 0) or q.get("nonmanifold_vertices", 0):
+        return True
+    keys = ("components", "euler_characteristic", "boundary_loops")
+    return all(q.get(k) == report[k] for k in keys)
 
 
 def main():
@@ -182,7 +271,9 @@ def main():
                                    f"{report['nonmanifold_vertices']} vertices")
                     elif report["angle_min_deg"] < FLAT_DEG:
                         problem = f"a triangle of no area: θmin {report['angle_min_deg']:.2g}°"
-                    elif not report["same_topology"]:
+                    elif not report["same_topology"] or (
+                            round_number % 6 == 3 and not args.options
+                            and not stitched_back(cli, mesh, tmp, report)):
                         problem = (f"topology: {report['components']} components, Euler "
                                    f"characteristic {report['euler_characteristic']}, "
                                    f"{report['boundary_loops']} loops")

@@ -101,6 +101,46 @@ TEST(Repair, StitchesASeamButNotAWeldAlongAnEdge) {
   EXPECT_TRUE(analyze_topology(weld).is_manifold());
 }
 
+// `mesh` as a triangle soup: each triangle with its own three corners, as STL-like writers
+// produce.
+TriangleMesh soup_of(const TriangleMesh& mesh) {
+  TriangleMesh soup;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Index base = static_cast<Index>(soup.vertices.size());
+    for (const Vec3& p : mesh.corners(t)) soup.vertices.push_back(p);
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  return soup;
+}
+
+TEST(Repair, StitchesASoupOfPartsThatTouchAndKeepsThemApartOnlyWhereTheyTouch) {
+  // Two spheres touching at a point and two cubes sharing an edge, as soups: every vertex is a
+  // group of copies, and those where the parts touch would be non-manifold merged. They split
+  // into one vertex per part there, and every other group merges, so that each part is closed
+  // (keeping the touching groups apart whole left slits around them, which split their
+  // neighbours' stars in turn, until the soup of diplodocus.off was not stitched at all).
+  const TriangleMesh a = icosphere(1);
+  const TriangleMesh spheres =
+      concatenate(a, transformed(icosphere(1), 1.0,
+                                 {2 * a.vertices[0].x, 2 * a.vertices[0].y, 2 * a.vertices[0].z}));
+  const TriangleMesh one = cube(1);
+  const TriangleMesh cubes = concatenate(one, transformed(one, 1.0, {2, 2, 0}));
+  for (const TriangleMesh& parts : {spheres, cubes}) {
+    TriangleMesh indexed = parts;
+    repair_mesh(indexed);  // the parts as stored: their own vertices where they touch
+    TriangleMesh soup = soup_of(parts);
+    const RepairReport r = repair_mesh(soup);
+    const TopologyReport t = analyze_topology(soup);
+    EXPECT_TRUE(t.is_manifold());
+    EXPECT_EQ(t.components, 2u);
+    EXPECT_EQ(t.boundary_loops, 0u);
+    EXPECT_EQ(t.euler_characteristic, 4);
+    EXPECT_EQ(soup.vertices.size(), indexed.vertices.size());
+    EXPECT_EQ(r.duplicate_vertices_merged, 3 * parts.triangles.size() - indexed.vertices.size());
+    EXPECT_GT(r.duplicate_vertices_kept_apart, 0u);
+  }
+}
+
 TEST(Repair, MergesExactlyDuplicateVerticesAndStitchesTheSurface) {
   // A triangle soup: each triangle with its own three corners, as STL-like writers produce.
   const TriangleMesh indexed = icosphere(2);

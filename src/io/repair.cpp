@@ -59,27 +59,26 @@ Star star_of(Index v, const std::vector<Triangle>& around) {
   return star;
 }
 
-// Per group representative flagged (its merged vertex is non-manifold in `merged`), whether the
-// merge made it so: more fans than the most any vertex of the group had in `original`, or more
-// edges of three or more triangles than they had together. A group whose vertex was a pinch
+// Per vertex flagged (its merged vertex is non-manifold in `merged`), whether the merge made it
+// so: more fans than the most any of the vertices merged into it (`to`) had in `original`, or
+// more edges of three or more triangles than they had together. A group whose vertex was a pinch
 // already, merged with copies that only close slits in its fans, stays merged (teapot.obj of a
 // public test set: three vertices at one point, one of them a pinch of two fans; kept apart, its
 // remesh welded the wrong ones).
 std::vector<bool> made_worse(const std::vector<Triangle>& original,
-                             const std::vector<Triangle>& merged,
-                             const std::vector<Index>& representative,
+                             const std::vector<Triangle>& merged, const std::vector<Index>& to,
                              const std::vector<bool>& flagged) {
-  std::map<Index, std::vector<Triangle>> before, after;  // per vertex of a flagged group
+  std::map<Index, std::vector<Triangle>> before, after;  // per vertex merged into a flagged one
   for (const Triangle& t : original)
     for (const Index v : t)
-      if (flagged[representative[v]]) before[v].push_back(t);
+      if (flagged[to[v]]) before[v].push_back(t);
   for (const Triangle& t : merged)
     for (const Index v : t)
       if (flagged[v]) after[v].push_back(t);
-  std::map<Index, Star> most;  // per representative: its group's most fans, and edges summed
+  std::map<Index, Star> most;  // per flagged vertex: the most fans of those merged, edges summed
   for (const auto& [v, around] : before) {
     const Star star = star_of(v, around);
-    Star& m = most[representative[v]];
+    Star& m = most[to[v]];
     m.fans = std::max(m.fans, star.fans);
     m.branching_edges += star.branching_edges;
   }
@@ -91,13 +90,60 @@ std::vector<bool> made_worse(const std::vector<Triangle>& original,
   return worse;
 }
 
+// Splits the vertices that `worse` marks, each into one per fan of its triangles in `merged`
+// (joined across its edges of exactly two triangles): the vertices merged into it (`to`) whose
+// triangles (`source`: per triangle of `merged`, its index in `original`) lie in one fan go
+// together, into the first of them in file order. In a triangle soup, where each copy of a vertex
+// has one triangle, two parts that touch at a point get a vertex each there, and the copies around
+// it stay merged (keeping them all apart left the triangles there unstitched, so that their
+// neighbours' stars split in turn, until nothing of a soup of diplodocus.off merged). Where one
+// fan holds them all, they are kept apart, each its own vertex.
+void split_by_fans(const std::vector<Triangle>& original, const std::vector<Triangle>& merged,
+                   const std::vector<std::size_t>& source, const std::vector<bool>& worse,
+                   std::vector<Index>& to) {
+  std::map<Index, std::vector<std::size_t>> star;  // per vertex to split, its triangles
+  for (std::size_t k = 0; k < merged.size(); ++k)
+    for (const Index v : merged[k])
+      if (worse[v]) star[v].push_back(k);
+  std::map<Index, std::vector<Index>> merged_into;  // per vertex to split, in file order
+  for (std::size_t v = 0; v < to.size(); ++v)
+    if (worse[to[v]]) merged_into[to[v]].push_back(static_cast<Index>(v));
+  for (auto& [v, copies] : merged_into) {
+    const std::vector<std::size_t>& around = star[v];
+    std::map<Index, std::vector<std::size_t>> at_edge;  // per other end, the triangles
+    for (std::size_t i = 0; i < around.size(); ++i)
+      for (const Index w : merged[around[i]])
+        if (w != v) at_edge[w].push_back(i);
+    UnionFind fans(around.size());
+    for (const auto& [w, triangles] : at_edge)
+      if (triangles.size() == 2) fans.unite(triangles[0], triangles[1]);
+    UnionFind together(copies.size());
+    std::map<std::size_t, std::size_t> fan_copy;  // per fan, a copy of its triangles
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      const Triangle& m = merged[around[i]];
+      const auto corner = std::find(m.begin(), m.end(), v) - m.begin();
+      const Index copy = original[source[around[i]]][corner];
+      const std::size_t c = std::lower_bound(copies.begin(), copies.end(), copy) - copies.begin();
+      const auto [at, first] = fan_copy.try_emplace(fans.find(i), c);
+      if (!first) together.unite(c, at->second);
+    }
+    std::vector<Index> first_of(copies.size(), kRemovedVertex);  // per class root
+    std::size_t classes = 0;
+    for (std::size_t c = 0; c < copies.size(); ++c)
+      if (Index& f = first_of[together.find(c)]; f == kRemovedVertex) f = copies[c], ++classes;
+    for (std::size_t c = 0; c < copies.size(); ++c)
+      to[copies[c]] = classes > 1 ? first_of[together.find(c)] : copies[c];
+  }
+}
+
 // Merges vertices with equal coordinates, or within near_point_tolerance of one another, where
 // that stitches the mesh, as CGAL's stitch_borders does: a group whose merge would leave a
-// non-manifold edge or vertex there stays apart (two parts that touch at a point or along an edge
-// are not welded; issue 18, diplodocus.off). Groups are merged all at once, then those at a
-// defect that the merge made are split again, until none is. Returns the vertices merged;
-// `nearly_equal` counts those of them not exactly at their group's first vertex, `kept_apart` the
-// vertices of the groups left apart, less one each; `new_id`: each vertex's id after the merge.
+// non-manifold edge or vertex there is split by fans (split_by_fans: two parts that touch at a
+// point or along an edge are not welded; issue 18, diplodocus.off). Groups are merged all at
+// once, then those at a defect that the merge made are split, until none is. Returns the vertices
+// merged; `nearly_equal` counts those of them not exactly at their group's first vertex,
+// `kept_apart` the vertices that a group was split into, less one each; `new_id`: each vertex's
+// id after the merge.
 std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& nearly_equal,
                                      std::size_t& kept_apart, std::vector<Index>& new_id) {
   const auto& p = mesh.vertices;
@@ -105,50 +151,66 @@ std::size_t merge_duplicate_vertices(TriangleMesh& mesh, std::size_t& nearly_equ
   const std::vector<Index> representative = near_point_groups(p, near_point_tolerance(p));
   std::vector<std::size_t> group_size(p.size(), 0);
   for (const Index r : representative) ++group_size[r];
-  std::vector<bool> merging(p.size(), false);  // per representative
-  bool any = false;
-  for (std::size_t v = 0; v < p.size(); ++v)
-    if (group_size[v] > 1) merging[v] = any = true;
   kept_apart = nearly_equal = 0;
-  if (!any) return 0;
-  auto target = [&](Index v) { return merging[representative[v]] ? representative[v] : v; };
+  if (std::none_of(group_size.begin(), group_size.end(), [](std::size_t n) { return n > 1; }))
+    return 0;
+  std::vector<Index> to(p.size());  // per vertex, the vertex it merges into (itself: none)
+  for (std::size_t v = 0; v < p.size(); ++v) to[v] = representative[v];
   for (;;) {
-    std::vector<Triangle> merged = mesh.triangles;
-    for (Triangle& t : merged)
-      for (Index& v : t) v = target(v);
-    // A triangle with two nearly equal corners collapses; the repair drops it.
-    std::erase_if(merged,
-                  [](const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; });
+    std::vector<Triangle> merged;
+    std::vector<std::size_t> source;  // per merged triangle, its index in the mesh
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      Triangle m = mesh.triangles[t];
+      for (Index& v : m) v = to[v];
+      // A triangle with two nearly equal corners collapses; the repair drops it.
+      if (m[0] == m[1] || m[1] == m[2] || m[0] == m[2]) continue;
+      merged.push_back(m);
+      source.push_back(t);
+    }
     // Boundary edges and folds are allowed: only a non-manifold edge or vertex splits a group,
     // and only one that the merge made worse than the group's own vertices were.
     const std::vector<bool> bad = find_manifold_defects(p.size(), merged, {}, false).vertex;
+    std::vector<std::size_t> merged_count(p.size(), 0);
+    for (const Index t : to) ++merged_count[t];
     std::vector<bool> flagged(p.size(), false);
     bool any_flagged = false;
     for (std::size_t v = 0; v < p.size(); ++v)
-      any_flagged |= flagged[v] = bad[v] && merging[v] && representative[v] == v;
+      any_flagged |= flagged[v] = bad[v] && to[v] == v && merged_count[v] > 1;
     if (!any_flagged) break;  // the usual case: no merge made a defect
-    const std::vector<bool> worse = made_worse(mesh.triangles, merged, representative, flagged);
-    bool split = false;
-    for (std::size_t v = 0; v < p.size(); ++v)
-      if (worse[v]) {
-        merging[v] = false;
-        kept_apart += group_size[v] - 1;
-        split = true;
+    std::vector<bool> worse = made_worse(mesh.triangles, merged, to, flagged);
+    if (std::none_of(worse.begin(), worse.end(), [](bool w) { return w; })) break;
+    // No two neighbours split at once: where two merged vertices share an edge of four
+    // triangles, splitting either mends both, and splitting both opens a slit between them
+    // (each splits the four into other pairs). The first in file order is split, the other
+    // judged again once it is.
+    std::map<Index, std::vector<Index>> neighbours;  // of the vertices to split
+    for (const Triangle& t : merged)
+      for (const Index v : t)
+        if (worse[v]) neighbours[v].insert(neighbours[v].end(), t.begin(), t.end());
+    std::vector<bool> beside(p.size(), false);  // a neighbour of a vertex split this time
+    for (const auto& [v, around] : neighbours) {
+      if (beside[v]) {
+        worse[v] = false;
+        continue;
       }
-    if (!split) break;
+      for (const Index w : around) beside[w] = true;
+    }
+    split_by_fans(mesh.triangles, merged, source, worse, to);
   }
   std::vector<bool> keep(p.size(), true);
   std::size_t count = 0;
   for (std::size_t v = 0; v < p.size(); ++v)
-    if (const Index to = target(static_cast<Index>(v)); to != v) {
+    if (to[v] != v) {
       keep[v] = false, ++count;
-      nearly_equal += p[to] != p[v];
+      nearly_equal += p[to[v]] != p[v];
+    } else if (representative[v] != v) {
+      ++kept_apart;  // the first vertex of a part its group was split into, not the group's
     }
   if (count == 0) return 0;
   for (Triangle& t : mesh.triangles)
-    for (Index& v : t) v = target(v);
+    for (Index& v : t) v = to[v];
   const std::vector<Index> compacted = compact_vertices(mesh, keep);
-  for (std::size_t v = 0; v < new_id.size(); ++v) new_id[v] = compacted[target(Index(v))];
+  for (std::size_t v = 0; v < new_id.size(); ++v) new_id[v] = compacted[to[v]];
   return count;
 }
 
