@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <numbers>
 
 #include "cvtmesh/remesh.hpp"
@@ -240,6 +241,60 @@ TEST(HolePatch, ThePatchOfALoopInAPlaneIsTheSameOnEveryCall) {
   EXPECT_EQ(first->size(), 8u);
   std::vector<std::vector<char>> held;  // the heap moves on between calls
   for (int call = 0; call < 20; ++call) {
+    held.emplace_back(std::size_t{1000} << (call % 12));
+    EXPECT_EQ(hole_patch(m, loop), first) << "call " << call;
+  }
+}
+
+TEST(HolePatch, ALongLoopInAPlaneIsSplitAndPatchedTheSameOnEveryCall) {
+  // 400 points around a wall, each a rounding off its plane, as the noised slab's were: CGAL's
+  // Delaunay search, which loops over 200 edges got, gave it a different patch on nearly every
+  // call. Split into two loops of about 200, each patched by the search over all triangles, it
+  // gets one patch: a disc on the loop, each loop edge in one triangle (in the loop's direction)
+  // and each chord in two.
+  constexpr int n = 400;
+  TriangleMesh m;
+  HoleLoop loop;
+  std::uint64_t state = 12345;
+  const auto noise = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1p-53 - 0.5;
+  };
+  const auto wall = [&] { return noise() < 0 ? 0.5 : std::nextafter(0.5, 0.0); };
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    m.vertices.push_back(
+        {wall(), std::cos(a) * (1 + 0.05 * noise()), std::sin(a) * (1 + 0.05 * noise())});
+  }
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * (i + 0.5) / n;
+    m.vertices.push_back({wall(), 1.2 * std::cos(a), 1.2 * std::sin(a)});
+    loop.vertices.push_back(static_cast<Index>(i));
+    loop.opposite.push_back(static_cast<Index>(n + i));
+  }
+  const std::optional<std::vector<Triangle>> first = hole_patch(m, loop);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->size(), static_cast<std::size_t>(n - 2));
+  std::map<std::pair<Index, Index>, int> used;  // directed edges
+  for (const Triangle& t : *first)
+    for (int k = 0; k < 3; ++k) ++used[{t[k], t[(k + 1) % 3]}];
+  const auto uses = [&](Index a, Index b) {
+    const auto at = used.find({a, b});
+    return at == used.end() ? 0 : at->second;
+  };
+  for (Index i = 0; i < n; ++i) {
+    const Index j = (i + 1) % n;
+    EXPECT_EQ(uses(i, j), 1) << "loop edge " << i;
+    EXPECT_EQ(uses(j, i), 0) << "loop edge " << i;
+  }
+  for (const auto& [edge, count] : used) {
+    const bool on_loop = (edge.first + 1) % n == edge.second || (edge.second + 1) % n == edge.first;
+    if (!on_loop) {
+      EXPECT_EQ(count + uses(edge.second, edge.first), 2) << "chord";
+    }
+  }
+  std::vector<std::vector<char>> held;  // the heap moves on between calls
+  for (int call = 0; call < 10; ++call) {
     held.emplace_back(std::size_t{1000} << (call % 12));
     EXPECT_EQ(hole_patch(m, loop), first) << "call " << call;
   }
