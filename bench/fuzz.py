@@ -26,9 +26,10 @@ A run fails when cvtmesh exits with an error, when the output has non-manifold e
 where the input has none or a triangle of no area (an angle under 0.001°), or when its topology
 (components, Euler characteristic, boundary loops) differs from the input's; a soup's also when
 it differs from that of the copy it was made from, repaired, where that is a manifold (the
-repair must stitch it back; checked without --options). Runs over --slow seconds are listed too. The same round always makes the same inputs and options (a mesh's
-randomness depends on the round and its place in the full list, not on --only), so a failure is
-reproduced by its round and name; --keep DIR keeps the failing inputs there.
+repair must stitch it back; checked without --options). Runs over --slow seconds are listed
+too. The same round always makes the same inputs and options (a mesh's randomness depends on
+the round and its place in the full list, not on --only), so a failure is reproduced by its
+round and name; --keep DIR keeps the failing inputs there.
 
     bench/fuzz.py [--rounds 0,1,2] [--only NAME,...] [--build build] [--data DIR] [--keep DIR]
                   [--timeout S] [--slow S] [--options "--fill-holes ..."]
@@ -124,16 +125,15 @@ def damaged(vertices, faces, round_number, rng):
             soup.append(list(range(first, first + len(f)))[::-1 if turned else 1])
         points, faces = points[points_of], soup
     if mode == 4:
-        faces = split_edges(points, faces, uses, touched, rng)
-        points = faces.pop()
+        points, faces = split_edges(points, faces, uses, touched, rng)
     if mode == 5:
         faces = cut_discs(faces, touched, rng)
     return points, faces, whole
 
 
 def split_edges(points, faces, uses, touched, rng):
-    """Mode 4's faces, and last the points with the new ones: 3% of the edges between two
-    triangles split near an end, no triangle split twice."""
+    """Mode 4's points and faces: 3% of the edges between two triangles split near an end, no
+    triangle split twice."""
     by_edge = {}
     for i, f in enumerate(faces):
         if len(f) == 3:
@@ -157,8 +157,7 @@ def split_edges(points, faces, uses, touched, rng):
             out[i] = [u, p, w]
             out.append([p, v, w])
         split.update(pair)
-    out.append(np.array(points))
-    return out
+    return np.array(points), out
 
 
 def cut_discs(faces, touched, rng):
