@@ -7,6 +7,7 @@
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/io.hpp"
+#include "cvtmesh/repair.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "cvtmesh/topology.hpp"
 #include "support/shapes.hpp"
@@ -230,6 +231,24 @@ TEST(ReadMesh, AsciiStlSharesCornersBetweenFacets) {
   ASSERT_EQ(m.triangles.size(), 2u);
   EXPECT_EQ(m.vertices.size(), 4u);
   EXPECT_EQ(analyze_topology(m).boundary_loops, 1u);
+}
+
+TEST(ReadMesh, StlCornersWeldedIntoANonManifoldVertexStayApartForRepairToStitch) {
+  // Two cubes sharing an edge, written as STL (each facet with its own corners): CGAL's reader
+  // shares every recurring point, which put four triangles on that edge. The corners there stay
+  // apart as the file has them, and repair stitches each cube closed without welding the two.
+  TempDir dir;
+  const TriangleMesh one = cube(1);
+  write_mesh(dir / "two.stl", concatenate(one, transformed(one, 1.0, {2, 2, 0})));
+  TriangleMesh m = read_mesh(dir / "two.stl");
+  EXPECT_EQ(m.triangles.size(), 2 * one.triangles.size());
+  repair_mesh(m);
+  const TopologyReport t = analyze_topology(m);
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(t.boundary_loops, 0u);
+  EXPECT_EQ(t.euler_characteristic, 4);
+  EXPECT_EQ(m.vertices.size(), 2 * one.vertices.size());
 }
 
 TEST(ReadMesh, ErrorNamesTheFileAndTheProblem) {

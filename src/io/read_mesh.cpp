@@ -17,8 +17,10 @@
 #include <mutex>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "cvtmesh/io.hpp"
+#include "geometry/manifold_defects.hpp"
 #include "io/input_problem.hpp"
 #include "io/read_obj.hpp"
 #include "io/read_off.hpp"
@@ -52,6 +54,30 @@ void check_binary_stl_size(const std::filesystem::path& path, std::istream& in,
                             std::to_string(size) + " bytes");
 }
 
+// An STL file stores each facet's corners apart, and CGAL's reader shares every point that
+// recurs. Where that makes a vertex non-manifold (two parts that touch: diplodocus.off written
+// as STL came in with 2 non-manifold edges, a worse surface than the file's), each facet there
+// keeps a corner of its own, as the file has it, and repair decides what merges (issue 18 item
+// 3: split by fans, no part welded to another).
+void unweld_nonmanifold_corners(std::vector<Point>& points,
+                                std::vector<std::array<std::size_t, 3>>& facets) {
+  if (points.size() > std::numeric_limits<Index>::max()) return;  // refused by the caller
+  std::vector<Triangle> triangles;
+  for (const auto& f : facets)
+    triangles.push_back(
+        {static_cast<Index>(f[0]), static_cast<Index>(f[1]), static_cast<Index>(f[2])});
+  const std::vector<bool> defect =
+      find_manifold_defects(points.size(), triangles, {}, false).vertex;
+  if (std::none_of(defect.begin(), defect.end(), [](bool d) { return d; })) return;
+  std::vector<char> kept(defect.size(), 0);  // the first corner keeps the shared point
+  for (auto& f : facets)
+    for (std::size_t& v : f)
+      if (defect[v] && std::exchange(kept[v], 1)) {
+        points.push_back(points[v]);
+        v = points.size() - 1;
+      }
+}
+
 bool read_with_cgal(MeshFormat format, std::istream& in, PolygonSoup& soup, bool verbose) {
   const auto np = CGAL::parameters::verbose(verbose);
   std::vector<Point> points;
@@ -64,6 +90,7 @@ bool read_with_cgal(MeshFormat format, std::istream& in, PolygonSoup& soup, bool
     case MeshFormat::stl: {
       std::vector<std::array<std::size_t, 3>> triangles;
       ok = CGAL::IO::read_STL(in, points, triangles, np);
+      if (ok) unweld_nonmanifold_corners(points, triangles);
       for (const auto& t : triangles) soup.polygons.emplace_back(t.begin(), t.end());
       break;
     }
