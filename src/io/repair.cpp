@@ -39,9 +39,10 @@ void compose(std::vector<Index>& first, const std::vector<Index>& second) {
 }
 
 // A vertex's star: how many fans its triangles make (joined across its edges of exactly two of
-// them), and how many of its edges have three or more.
+// them), and how many of its edges have three or more; per triangle, the first of its fan.
 struct Star {
   std::size_t fans = 0, branching_edges = 0;
+  std::vector<std::size_t> fan_of;
 };
 
 Star star_of(Index v, const std::vector<Triangle>& around) {
@@ -55,7 +56,10 @@ Star star_of(Index v, const std::vector<Triangle>& around) {
     if (triangles.size() == 2) fans.unite(triangles[0], triangles[1]);
     star.branching_edges += triangles.size() > 2;
   }
-  for (std::size_t i = 0; i < around.size(); ++i) star.fans += fans.find(i) == i;
+  for (std::size_t i = 0; i < around.size(); ++i) {
+    star.fan_of.push_back(fans.find(i));
+    star.fans += star.fan_of.back() == i;
+  }
   return star;
 }
 
@@ -110,13 +114,9 @@ void split_by_fans(const std::vector<Triangle>& original, const std::vector<Tria
     if (worse[to[v]]) merged_into[to[v]].push_back(static_cast<Index>(v));
   for (auto& [v, copies] : merged_into) {
     const std::vector<std::size_t>& around = star[v];
-    std::map<Index, std::vector<std::size_t>> at_edge;  // per other end, the triangles
-    for (std::size_t i = 0; i < around.size(); ++i)
-      for (const Index w : merged[around[i]])
-        if (w != v) at_edge[w].push_back(i);
-    UnionFind fans(around.size());
-    for (const auto& [w, triangles] : at_edge)
-      if (triangles.size() == 2) fans.unite(triangles[0], triangles[1]);
+    std::vector<Triangle> triangles;
+    for (const std::size_t k : around) triangles.push_back(merged[k]);
+    const Star fans = star_of(v, triangles);
     UnionFind together(copies.size());
     std::map<std::size_t, std::size_t> fan_copy;  // per fan, a copy of its triangles
     for (std::size_t i = 0; i < around.size(); ++i) {
@@ -124,7 +124,7 @@ void split_by_fans(const std::vector<Triangle>& original, const std::vector<Tria
       const auto corner = std::find(m.begin(), m.end(), v) - m.begin();
       const Index copy = original[source[around[i]]][corner];
       const std::size_t c = std::lower_bound(copies.begin(), copies.end(), copy) - copies.begin();
-      const auto [at, first] = fan_copy.try_emplace(fans.find(i), c);
+      const auto [at, first] = fan_copy.try_emplace(fans.fan_of[i], c);
       if (!first) together.unite(c, at->second);
     }
     std::vector<Index> first_of(copies.size(), kRemovedVertex);  // per class root
