@@ -159,5 +159,51 @@ TEST(Polish, PolishesAgainOnlyTheDefectsWhoseSeedsChanged) {
   EXPECT_LT(4 * moved, moved_unrecorded);
 }
 
+// Told to polish around some seeds (topology control's first polish of an adaptive output, around
+// where it fails), it polishes the defects near them only: of two defects on opposite sides of a
+// sphere, the one far from them stays.
+TEST(Polish, AroundGivenSeedsPolishesOnlyTheDefectsNearThem) {
+  const TriangleMesh sphere = icosphere(4);
+  const SurfaceProjector projector(sphere);
+  const CvtObjective placement(sphere, &projector);
+  RemeshSettings s = featureless();
+  s.vertices = 800;
+  const TriangleMesh converged = remesh(sphere, s).mesh;
+  // A defect at the first triangle, and one at the triangle whose centroid is farthest from it.
+  const auto centroid = [&](const Triangle& t) {
+    return (1.0 / 3) *
+           (converged.vertices[t[0]] + converged.vertices[t[1]] + converged.vertices[t[2]]);
+  };
+  const Triangle near = converged.triangles.front();
+  const Triangle far = *std::max_element(
+      converged.triangles.begin(), converged.triangles.end(), [&](auto& a, auto& b) {
+        return norm(centroid(a) - centroid(near)) < norm(centroid(b) - centroid(near));
+      });
+  const Defect first = dragged(sphere, converged.vertices, near);
+  const Defect both = dragged(sphere, first.seeds, far);
+  const auto moved_near = [&](const std::vector<Vec3>& seeds, const Vec3& at) {
+    std::size_t n = 0;
+    for (std::size_t k = 0; k < seeds.size(); ++k)
+      n += seeds[k] != both.seeds[k] && norm(both.seeds[k] - at) < 0.5;
+    return n;
+  };
+
+  TraversalMemory memory;
+  std::vector<Vec3> everywhere = both.seeds;
+  ASSERT_EQ(extract_polished(sphere, everywhere, placement, {1, 10}, memory).rounds, 1);
+  ASSERT_GT(moved_near(everywhere, first.at), 0u);
+  ASSERT_GT(moved_near(everywhere, both.at), 0u);
+
+  PolishSettings around{1, 10};
+  around.around = {near[0]};
+  std::vector<Vec3> seeds = both.seeds;
+  EXPECT_EQ(extract_polished(sphere, seeds, placement, around, memory).rounds, 1);
+  EXPECT_GT(moved_near(seeds, first.at), 0u);
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    if (seeds[k] == both.seeds[k]) continue;
+    EXPECT_LT(norm(both.seeds[k] - first.at), 1.0) << "seed " << k << " far from them moved";
+  }
+}
+
 }  // namespace
 }  // namespace cvtmesh

@@ -18,6 +18,9 @@ struct PolishSettings {
   // Seeds from this id on do not move: refinement points that topology control puts at details
   // finer than the spacing, which Lloyd steps would pull back out of them.
   std::size_t pinned_from = static_cast<std::size_t>(-1);
+  // Seed ids (sorted): only the defects within kAroundRings rings of them in the triangulation
+  // are polished; empty: all of them.
+  std::vector<Index> around = {};
 };
 
 struct PolishedOutput {
