@@ -313,10 +313,10 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
     // θmin 29.7° -> 18.4°; with seed 2, 34 seeds where 103, θmin 36.7° -> 22.8°). Only around
     // where the extraction fails (failing_seeds): elsewhere its badly shaped triangles are the
     // grading's, which Lloyd steps barely change (bull.off at 2k: 227, and 180 after 30 steps
-    // over 1,410 of its 2,000 seeds; now 0.63 of the time). 12 meshes × 3 seeds that polish
-    // here: the same seeds added on 29 of 36 runs, as good on average (θmin 37.5° vs 37.2°, Qmin
-    // 0.652 vs 0.655), 0.83 of the time; within 2 rings of the failing seeds, man.off with seed 2
-    // fell to 22.0°, within 6 femur.off lost 1-2° (kAroundRings in polish_defects.cpp).
+    // over 1,410 of its 2,000 seeds; its whole run now 0.6 of the time). 12 meshes × 3 seeds that
+    // polish here: the same seeds added on 29 of 36 runs, as good on average (θmin 37.5° vs 37.2°,
+    // Qmin 0.652 vs 0.655), 0.83 of the time; within 2 rings of the failing seeds, man.off with
+    // seed 2 fell to 22.0°, within 6 femur.off lost 1-2° (kAroundRings in polish_defects.cpp).
     if (round == 0 && !polished_at_once(m.placement) && !a.topology_kept && polish.rounds > 0) {
       PolishSettings around_defects = polish;
       around_defects.around =
