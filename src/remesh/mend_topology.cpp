@@ -237,6 +237,9 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
     const SurfaceProjector* crossing = crossings.get();
     std::vector<Triangle> dual;  // the defects' triangles, in seeds
     for (Triangle t : a.defects.triangles) {
+      // A triangle at an edge that a link flip halved has no dual among the seeds.
+      if (std::any_of(t.begin(), t.end(), [&](Index v) { return v >= vertex_seed.size(); }))
+        continue;
       for (Index& v : t) v = vertex_seed[v];
       // The pinned rounds do not refine at crossings either: the last step mends them.
       if (!pinned || !crossing || !at_crossing(*crossing, seeds, t)) dual.push_back(t);
@@ -274,12 +277,14 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
 
 // The seeds where the extraction `rdt` fails: those of the triangles at `defects`, and those whose
 // cells are in several pieces (a vertex of `rdt` past the seeds stands for a cell's far piece;
-// `vertex_seed`: per vertex, its seed), sorted.
+// `vertex_seed`: per vertex, its seed), sorted. `defects` are the assessment's, whose mesh may
+// have more vertices than `rdt`: the middles of edges that link flips halved, of no seed.
 std::vector<Index> failing_seeds(const TriangleMesh& rdt, const OutputDefects& defects,
                                  const std::vector<Index>& vertex_seed, std::size_t seeds) {
   std::vector<Index> ids;
   for (const Triangle& t : defects.triangles)
-    for (const Index v : t) ids.push_back(vertex_seed[v]);
+    for (const Index v : t)
+      if (v < vertex_seed.size()) ids.push_back(vertex_seed[v]);
   for (std::size_t v = seeds; v < rdt.vertices.size(); ++v) ids.push_back(vertex_seed[v]);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
