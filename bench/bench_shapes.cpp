@@ -10,6 +10,13 @@
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
 //     rounds (finish/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
+//   BM_CellNormalPoints: the same level-4 icosphere, jittered along the sphere by up to 2% of the
+//     radius, its vertices the seeds on the level-6 one: their cells' centroids and normals
+//     (voronoi/cell_normals) replayed from the memory of a traversal of the same seeds, as the
+//     remesher does after its extraction, against the same without a memory, then the vertices
+//     moved onto their cells' normal lines (finish/cell_normal_points); counters cells_s, fresh_s,
+//     cells_over_fresh, move_s, step_s (both), projections_s, step_over_projections, moved, and
+//     the Hausdorff mean before and after (% of the radius).
 //   BM_SnapToCreases/T: an icosphere of level 5 (10,242 vertices) projected onto an icosahedron,
 //     its vertices beside the icosahedron's edges moved onto them (finish/snap_to_creases) on T
 //     threads; counters snap_s, projections_s (every vertex once, one thread),
@@ -37,11 +44,13 @@
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "finish/cell_normal_points.hpp"
 #include "finish/fit_surface.hpp"
 #include "finish/improve_shapes.hpp"
 #include "finish/snap_to_creases.hpp"
 #include "geometry/surface_projector.hpp"
 #include "support/shapes.hpp"
+#include "voronoi/cell_normals.hpp"
 
 namespace {
 
@@ -117,6 +126,38 @@ void BM_FitSurface(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FitSurface)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_CellNormalPoints(benchmark::State& state) {
+  const TriangleMesh fine = testing::icosphere(6);
+  const SurfaceProjector surface(fine);
+  const TriangleMesh start =
+      on_surface(testing::jittered_on_sphere(testing::icosphere(4), 0.02, 1), surface);
+  const std::vector<bool> movable(start.vertices.size(), true);
+  const double mean_before = hausdorff_distance(start, fine).mean;
+  for (auto _ : state) {
+    TriangleMesh mesh = start;
+    TraversalMemory fresh, replayed;
+    cell_normals(fine, start.vertices, replayed);  // the extraction's traversal
+    const auto fresh_start = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(cell_normals(fine, start.vertices, fresh));
+    const double fresh_s = seconds_since(fresh_start);
+    const auto cells_start = std::chrono::steady_clock::now();
+    const std::vector<CellNormal> cells = cell_normals(fine, start.vertices, replayed);
+    const double cells_s = seconds_since(cells_start);
+    const auto move_start = std::chrono::steady_clock::now();
+    const std::size_t moved = move_onto_cell_normals(mesh, start.vertices, cells, surface, movable);
+    const double move_s = seconds_since(move_start);
+    time_against_projections(state, "step", cells_s + move_s, surface, start.vertices);
+    state.counters["move_s"] = move_s;
+    state.counters["cells_s"] = cells_s;
+    state.counters["fresh_s"] = fresh_s;
+    state.counters["cells_over_fresh"] = cells_s / fresh_s;
+    state.counters["moved"] = static_cast<double>(moved);
+    state.counters["hd_mean_before_pct"] = 100 * mean_before;
+    state.counters["hd_mean_after_pct"] = 100 * hausdorff_distance(mesh, fine).mean;
+  }
+}
+BENCHMARK(BM_CellNormalPoints)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 void BM_SnapToCreases(benchmark::State& state) {
   const TriangleMesh icosahedron = testing::icosphere(0);

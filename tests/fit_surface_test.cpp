@@ -104,6 +104,8 @@ TEST(FitSurface, RemeshEndsWithItAndReportsIt) {
   const RemeshResult fitted = remesh(torus, s);
   EXPECT_EQ(on_surface.vertices_fitted, 0u);
   EXPECT_GT(fitted.vertices_fitted, 500u);
+  EXPECT_EQ(on_surface.vertices_on_cell_normals, 0u);
+  EXPECT_GT(fitted.vertices_on_cell_normals, 300u);
   EXPECT_LT(hausdorff_distance(fitted.mesh, torus).mean,
             0.67 * hausdorff_distance(on_surface.mesh, torus).mean);
   const QualityReport q0 = measure_quality(on_surface.mesh), q1 = measure_quality(fitted.mesh);

@@ -265,9 +265,10 @@ void add_remesh_command(CLI::App& app, Action& run) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--fit-rounds", o->settings.fit_rounds,
                   "Rounds of moving surface vertices along their normals so that the input lies "
-                  "between them and their triangles' middles, last, after the vertices beside the "
-                  "input's untraced creases move onto them; never lowers θmin or Qmin (0: neither; "
-                  "vertices stay on the input where the sweeps left them)")
+                  "between them and their triangles' middles, last, after the vertices move onto "
+                  "their Voronoi cells' normal lines and those beside the input's untraced creases "
+                  "onto them; never lowers θmin or Qmin (0: none of it; vertices stay on the input "
+                  "where the sweeps left them)")
       ->default_val(1)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,

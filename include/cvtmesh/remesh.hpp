@@ -70,9 +70,10 @@ struct RemeshSettings {
   // Sweeps of edge flips and vertex moves around the output's badly shaped triangles, the last
   // step (see RemeshResult::shape_flips); 0 turns it off.
   int shape_sweeps = 5;
-  // Rounds of fitting the output to the input, last, after the vertices beside the input's
-  // untraced creases move onto them (see RemeshResult::vertices_snapped and vertices_fitted); 0
-  // does neither and keeps every vertex on the input surface where the sweeps left it.
+  // Rounds of fitting the output to the input, last, after the vertices move onto their cells'
+  // normal lines and those beside the input's untraced creases onto them (see
+  // RemeshResult::vertices_on_cell_normals, vertices_snapped and vertices_fitted); 0 does none of
+  // it and keeps every vertex on the input surface where the sweeps left it.
   int fit_rounds = 1;
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
@@ -216,6 +217,10 @@ struct RemeshResult {
   // Surface vertices moved onto an input crease that the output does not trace as a feature,
   // before the fit (finish/snap_to_creases): a low-poly input remeshed finer keeps its edges.
   std::size_t vertices_snapped = 0;
+  // Surface vertices moved, before those, from the seed to the point where the seed's cell's
+  // mean normal line through its centroid meets the input (finish/cell_normal_points): at a tip
+  // or a ridge narrower than an edge, the nearest point to the centroid lies on a flank.
+  std::size_t vertices_on_cell_normals = 0;
   // Surface vertices moved off the input along their normals, last of all, so that the input lies
   // between them and their triangles' middles (finish/fit_surface): the chords of a curved
   // surface all fall inside convex parts otherwise. Never where θmin or Qmin would fall.

@@ -12,6 +12,7 @@
 #include "features/edge_uses.hpp"
 #include "finish/bar_shapes.hpp"
 #include "finish/best_round.hpp"
+#include "finish/cell_normal_points.hpp"
 #include "finish/coincident_edges.hpp"
 #include "finish/fit_surface.hpp"
 #include "finish/flat_ears.hpp"
@@ -143,10 +144,11 @@ void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
 }  // namespace
 
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
-                   std::size_t optimized_seeds, const SeedConstraints& constraints,
-                   const Features& features, const CurveProjector& curves,
-                   const TriangleMesh& surface, const SurfaceProjector& projector,
-                   const std::vector<NarrowAngle>& narrow, const RemeshSettings& settings) {
+                   std::size_t optimized_seeds, const std::vector<CellNormal>& cells,
+                   const SeedConstraints& constraints, const Features& features,
+                   const CurveProjector& curves, const TriangleMesh& surface,
+                   const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
+                   const RemeshSettings& settings) {
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
   std::vector<bool> corners(result.mesh.vertices.size(), false), seedless(corners.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;
@@ -315,6 +317,9 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   if (result.valence_three_removed + shapes.collapses + result.flat_pairs_merged > 0)
     drop_unused_vertices(result, removable);
   // Surface vertices only: a feature or corner vertex stays on its curve.
+  if (!cells.empty())
+    result.vertices_on_cell_normals =
+        move_onto_cell_normals(result.mesh, seeds, cells, projector, removable);
   if (settings.fit_rounds > 0)
     result.vertices_snapped = snap_to_creases(result.mesh, surface, features, projector, removable);
   const SurfaceFit fit = fit_to_surface(result.mesh, projector, removable, settings.fit_rounds);

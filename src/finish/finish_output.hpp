@@ -11,6 +11,7 @@
 
 #include "cvtmesh/remesh.hpp"
 #include "features/feature_seeds.hpp"
+#include "voronoi/cell_normals.hpp"
 
 namespace cvtmesh {
 
@@ -18,14 +19,16 @@ class SurfaceProjector;
 
 // `result.mesh`: the extraction topology control returned, after its last step (its first
 // vertices the seeds, by id); `seeds`: all the seeds, those topology control added from
-// `optimized_seeds` on. Fills `result`'s counts of what each step did, its feature edges, and the
-// vertices added. `narrow`: the input's angles under 30° between features; the triangles at those
-// the output traces are held to them in the last sweeps (improve_shapes). `surface`: the input
-// that `projector` projects onto, in the ids of `features`.
+// `optimized_seeds` on; `cells`: per seed, its restricted cell's centroid and normal (empty: the
+// vertices stay at the seeds, as with no fit). Fills `result`'s counts of what each step did, its
+// feature edges, and the vertices added. `narrow`: the input's angles under 30° between features;
+// the triangles at those the output traces are held to them in the last sweeps (improve_shapes).
+// `surface`: the input that `projector` projects onto, in the ids of `features`.
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
-                   std::size_t optimized_seeds, const SeedConstraints& constraints,
-                   const Features& features, const CurveProjector& curves,
-                   const TriangleMesh& surface, const SurfaceProjector& projector,
-                   const std::vector<NarrowAngle>& narrow, const RemeshSettings& settings);
+                   std::size_t optimized_seeds, const std::vector<CellNormal>& cells,
+                   const SeedConstraints& constraints, const Features& features,
+                   const CurveProjector& curves, const TriangleMesh& surface,
+                   const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
+                   const RemeshSettings& settings);
 
 }  // namespace cvtmesh

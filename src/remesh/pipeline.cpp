@@ -28,6 +28,7 @@
 #include "sizing/size_field.hpp"
 #include "system/elapsed.hpp"
 #include "system/memory_budget.hpp"
+#include "voronoi/cell_normals.hpp"
 #include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
@@ -287,6 +288,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   placement.project(seeds);
   MendReport mends;
   const std::size_t optimized_seeds = seeds.size();  // the rounds append theirs
+  std::vector<CellNormal> cells;                     // of the seeds as extracted, for the fit
   {
     // Polishing and topology control change few seeds between triangulations: each replays the
     // triangles that the last one left unchanged (issue 18: topology control works locally).
@@ -309,6 +311,7 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                            mends);
     result.seconds_topology = seconds_since(mend_start);
     result.mesh = std::move(output.mesh);
+    if (settings.fit_rounds > 0) cells = cell_normals(mesh, seeds, traversals);
   }
   result.polish_rounds += mends.polish_rounds;
   result.links_mended = mends.links_mended;
@@ -327,8 +330,8 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.holes_closed = last.closed.holes;
   result.triangles_closing_holes = last.closed.triangles;
   result.vertices_closing_holes = last.closed.vertices;
-  finish_output(result, seeds, optimized_seeds, constraints, features, *curves, mesh, *projector,
-                narrow_feature_angles(mesh, features, kNarrowAngleDeg), settings);
+  finish_output(result, seeds, optimized_seeds, cells, constraints, features, *curves, mesh,
+                *projector, narrow_feature_angles(mesh, features, kNarrowAngleDeg), settings);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);

@@ -77,6 +77,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["shape_flips"] = r.shape_flips;
   j["shape_moves"] = r.shape_moves;
   j["short_edges_collapsed"] = r.short_edges_collapsed;
+  j["vertices_on_cell_normals"] = r.vertices_on_cell_normals;
   j["vertices_snapped"] = r.vertices_snapped;
   j["vertices_fitted"] = r.vertices_fitted;
   j["time_s"] = total;
@@ -131,11 +132,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   text += fmt::format(
       "  cvt       {} iterations, {} RVD evaluations, energy {:.6e} -> {:.6e}; {} badly shaped "
       "triangles, {} rounds of Lloyd polishing; {} edges flipped, {} collapsed and {} vertices "
-      "moved around badly shaped triangles; {} vertices moved onto input creases and {} fitted "
-      "to the input\n",
+      "moved around badly shaped triangles; {} vertices moved onto their cells' normal lines, {} "
+      "onto input creases and {} fitted to the input\n",
       r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
-      r.polish_rounds, r.shape_flips, r.short_edges_collapsed, r.shape_moves, r.vertices_snapped,
-      r.vertices_fitted);
+      r.polish_rounds, r.shape_flips, r.short_edges_collapsed, r.shape_moves,
+      r.vertices_on_cell_normals, r.vertices_snapped, r.vertices_fitted);
   if (r.flat_ears_removed > 0)
     text += fmt::format(
         "  boundary  {} flat or folded ears removed (a boundary vertex whose one triangle "
