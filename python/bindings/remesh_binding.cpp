@@ -205,9 +205,9 @@ shape_sweeps : int, default 5
     step but one (0: none).
 fit_rounds : int, default 1
     Rounds of moving surface vertices along their normals so that the input lies between them
-    and their triangles' middles, last, after the vertices beside the input's untraced creases
-    move onto them; never lowers θmin or Qmin (0: neither; vertices stay on the input where the
-    sweeps left them).
+    and their triangles' middles, last, after the vertices move onto their Voronoi cells' normal
+    lines and those beside the input's untraced creases onto them; never lowers θmin or Qmin (0:
+    none of it; vertices stay on the input where the sweeps left them).
 topology_rounds : int, default 12
     Rounds of topology control: seeds added where the output misses feature edges or
     differs in topology; the best round is kept (0: none).
