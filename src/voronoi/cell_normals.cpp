@@ -1,6 +1,8 @@
 #include "voronoi/cell_normals.hpp"
 
+#include <algorithm>
 #include <mutex>
+#include <utility>
 
 #include "geometry/unit_vector.hpp"
 
@@ -20,6 +22,7 @@ class CellMomentSink : public PolygonSink {
     double mass2 = 0;
   };
   void begin(std::size_t chunks) override {
+    sums_.assign(sums_.size(), {});
     chunks_.assign(chunks, {});
     done_.assign(chunks, 0);
     added_ = 0;
