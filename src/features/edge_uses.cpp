@@ -24,6 +24,15 @@ std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh) {
   return uses;
 }
 
+std::vector<bool> on_edges_not_of_two(const TriangleMesh& mesh) {
+  std::vector<bool> on(mesh.vertices.size(), false);
+  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    if (j - i != 2) on[uses[i].edge[0]] = on[uses[i].edge[1]] = true;
+  });
+  return on;
+}
+
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh) {
   std::vector<Edge> edges;
   for (const EdgeUse& use : edge_uses(mesh)) edges.push_back(use.edge);

@@ -37,6 +37,10 @@ void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
   }
 }
 
+// Per vertex of `mesh`, whether it lies on an edge with other than two triangles (a boundary or
+// a non-manifold edge): where the finishing steps move no vertex.
+std::vector<bool> on_edges_not_of_two(const TriangleMesh& mesh);
+
 // The distinct edges of a mesh, each with the smaller vertex id first, sorted.
 std::vector<Edge> sorted_edges(const TriangleMesh& mesh);
 

@@ -8,6 +8,7 @@
 
 #include "features/edge_uses.hpp"
 #include "finish/move_limits.hpp"
+#include "finish/undo_moves.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/unit_vector.hpp"
@@ -30,10 +31,8 @@ std::size_t move_onto_cell_normals(TriangleMesh& mesh, const std::vector<Vec3>& 
   const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
   if (nt == 0) return 0;
   movable.resize(nv, false);
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    if (j - i != 2) movable[uses[i].edge[0]] = movable[uses[i].edge[1]] = false;
-  });
+  const std::vector<bool> fixed = on_edges_not_of_two(mesh);
+  for (std::size_t v = 0; v < nv; ++v) movable[v] = movable[v] && !fixed[v];
   std::map<Vec3, Index> seed_at;
   for (std::size_t s = 0; s < seeds.size(); ++s) seed_at.emplace(seeds[s], static_cast<Index>(s));
   std::vector<Index> seed_of(nv, kNoIndex);
@@ -68,23 +67,12 @@ std::size_t move_onto_cell_normals(TriangleMesh& mesh, const std::vector<Vec3>& 
   const std::vector<Vec3> before = mesh.vertices;
   for (std::size_t v = 0; v < nv; ++v)
     if (to[v]) mesh.vertices[v] = *to[v];
-  // Undo the moves at triangles that got worse, until none does: undoing all gives back the
-  // start, which passes.
-  for (bool undone = true; undone;) {
-    undone = false;
-    for (std::size_t t = 0; t < nt; ++t) {
-      const auto [a, b, c] = mesh.corners(t);
-      const MinShape s = min_shape(a, b, c);
-      if (s.min_angle >= floor[t].min_angle && s.quality >= floor[t].quality &&
-          dot(unit_normal(a, b, c), normal[t]) >= kMaxShiftTurnCos)
-        continue;
-      for (const Index v : mesh.triangles[t])
-        if (mesh.vertices[v] != before[v]) {
-          mesh.vertices[v] = before[v];
-          undone = true;
-        }
-    }
-  }
+  undo_moves_unless(mesh, before, [&](std::size_t t) {
+    const auto [a, b, c] = mesh.corners(t);
+    const MinShape s = min_shape(a, b, c);
+    return s.min_angle >= floor[t].min_angle && s.quality >= floor[t].quality &&
+           dot(unit_normal(a, b, c), normal[t]) >= kMaxShiftTurnCos;
+  });
   std::size_t moved = 0;
   for (std::size_t v = 0; v < nv; ++v) moved += mesh.vertices[v] != before[v];
   return moved;

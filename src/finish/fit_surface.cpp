@@ -9,6 +9,7 @@
 
 #include "features/edge_uses.hpp"
 #include "finish/move_limits.hpp"
+#include "finish/undo_moves.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
 #include "quality/min_shape.hpp"
@@ -180,19 +181,10 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
       const double reach = kMaxMove * shortest[v];
       mesh.vertices[v] = length > reach ? start[v] + (reach / length) * moved : to;
     }
-    // Undo the moves at triangles that got worse than the floors, until none does: undoing all
-    // gives back the round's start, which passed.
-    for (bool undone = true; undone;) {
-      undone = false;
-      for (std::size_t t = 0; t < nt; ++t) {
-        if (acceptable(mesh, t, face_normal[t], angle_floor, q_floor)) continue;
-        for (const Index v : mesh.triangles[t])
-          if (mesh.vertices[v] != before[v]) {
-            mesh.vertices[v] = before[v];
-            undone = true;
-          }
-      }
-    }
+    // Undo the moves at triangles that got worse than the floors.
+    undo_moves_unless(mesh, before, [&](std::size_t t) {
+      return acceptable(mesh, t, face_normal[t], angle_floor, q_floor);
+    });
   }
   for (std::size_t v = 0; v < nv; ++v)
     if (mesh.vertices[v] != start[v]) {

@@ -129,11 +129,7 @@ std::size_t snap_to_creases(TriangleMesh& output, const TriangleMesh& surface,
   const std::size_t nv = output.vertices.size();
   const std::vector<std::vector<Index>> star = triangles_around(output);
   const std::vector<double> shortest = shortest_edges(output);
-  std::vector<bool> fixed(nv, false);  // on a boundary or non-manifold edge
-  const std::vector<EdgeUse> uses = edge_uses(output);
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-    if (j - i != 2) fixed[uses[i].edge[0]] = fixed[uses[i].edge[1]] = true;
-  });
+  const std::vector<bool> fixed = on_edges_not_of_two(output);
 
   // The star of v with v at x (the mesh itself is only read, so stars are judged in parallel).
   const auto state_of = [&](std::size_t v, const Vec3& x, const SurfaceProjector::Foot& hint) {
