@@ -1,5 +1,8 @@
 #include "finish/finish_output.hpp"
 
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_group.h>
+
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -186,8 +189,6 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     split_supports = supports;
     split_supports.resize(split.vertices.size());  // the midpoints are surface vertices
     split_features = result.feature_edges;
-    split_shapes = improve_shapes(split, projector, &curves, split_supports, split_features,
-                                  settings.shape_sweeps, traced_tips(split, narrow, reach));
   }
   // Flat pairs merged, as a second output that goes through the same steps (sweeps, halving
   // rounds) as the first, the better of the two kept.
@@ -201,17 +202,6 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   const std::size_t pairs = merge_flat_pairs(merged, merged_features, corners_now);
   std::vector<VertexSupport> merged_supports;
   if (pairs > 0) merged_supports = supports;
-  ShapeImprovement shapes =
-      improve_shapes(result.mesh, projector, &curves, supports, result.feature_edges,
-                     settings.shape_sweeps, traced_tips(result.mesh, narrow, reach));
-  if (corners_split > 0 &&
-      shaped_better(bar_shapes(split, narrow, reach), bar_shapes(result.mesh, narrow, reach))) {
-    result.mesh = std::move(split);
-    result.feature_edges = std::move(split_features);
-    supports = std::move(split_supports);
-    shapes = split_shapes;
-    result.obtuse_corners_split = corners_split;
-  }
   // A vertex of three triangles is often what the flips and moves leave: each output is judged
   // with them removed.
   const auto removable_in = [](const std::vector<VertexSupport>& of) {
@@ -254,8 +244,9 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     const BarShapes after = bar_shapes(next.mesh, narrow, reach);
     return std::optional(std::pair{std::move(next), after});
   };
-  std::vector<Triangle> halved_all;  // the current round's halvings, all of them, before sweeps
-  const auto attempt = [&](const Round& from, int k,
+  // `halved_all`: the current round's halvings, all of them, before sweeps (one per chain of
+  // rounds, as two chains run at once below).
+  const auto attempt = [&](std::vector<Triangle>& halved_all, const Round& from, int k,
                            bool again) -> std::optional<std::pair<Round, BarShapes>> {
     if (!again) {
       Round all = halved(from, nullptr);
@@ -278,28 +269,61 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   const auto rounds_from = [&](Round start) {
     start.removed += remove_valence_three(start.mesh, removable_in(start.supports), projector);
     BarShapes start_shapes = bar_shapes(start.mesh, narrow, reach);
-    return best_round(std::move(start), start_shapes, kHalvingRounds, attempt, judge_round);
+    std::vector<Triangle> halved_all;
+    const auto attempt_here = [&](const Round& from, int k, bool again) {
+      return attempt(halved_all, from, k, again);
+    };
+    return best_round(std::move(start), start_shapes, kHalvingRounds, attempt_here, judge_round);
   };
+  // The three outputs (as it is, its obtuse boundary corners split, its flat pairs merged) are
+  // swept apart, each on one thread in a fixed order, so they run at once: the sweeps are serial
+  // (improve_shapes), and were a third of a whole remesh's time on two cores where all three run
+  // (lion.off at 10k). Each goes as it went one after the other: the outcome is the same.
+  std::optional<Round> merged_best;
+  tbb::task_group merged_work;  // declared after what its task uses, so an exception waits for it
+  if (pairs > 0)
+    merged_work.run([&] {
+      const ShapeImprovement merged_shapes =
+          improve_shapes(merged, projector, &curves, merged_supports, merged_features,
+                         settings.shape_sweeps, traced_tips(merged, narrow, reach));
+      merged_best = rounds_from({std::move(merged), std::move(merged_features),
+                                 std::move(merged_supports), merged_shapes});
+    });
+  ShapeImprovement shapes;
+  tbb::parallel_invoke(
+      [&] {
+        if (corners_split > 0)
+          split_shapes = improve_shapes(split, projector, &curves, split_supports, split_features,
+                                        settings.shape_sweeps, traced_tips(split, narrow, reach));
+      },
+      [&] {
+        shapes = improve_shapes(result.mesh, projector, &curves, supports, result.feature_edges,
+                                settings.shape_sweeps, traced_tips(result.mesh, narrow, reach));
+      });
+  if (corners_split > 0 &&
+      shaped_better(bar_shapes(split, narrow, reach), bar_shapes(result.mesh, narrow, reach))) {
+    result.mesh = std::move(split);
+    result.feature_edges = std::move(split_features);
+    supports = std::move(split_supports);
+    shapes = split_shapes;
+    result.obtuse_corners_split = corners_split;
+  }
   Round best = rounds_from({result.mesh, result.feature_edges, supports, shapes});
+  merged_work.wait();
   // The flat pairs merged, swept and taken through the rounds alike, kept where the output ends
   // better so, the worst triangle first: where the sweeps mend a pair, they can do better than
   // the merged triangle, whose boundary edge they cannot flip, and the rounds after can change
   // which is better (beetle.obj of a public test set at 5k: θmin 6.2° as it is, 2.8° merged;
   // beetle-alt.obj 8.7° as it is, 19.5° merged; at 1k, after one sweep, merged was the better,
   // after the rounds the worse, 17.8° against 19.1°).
-  if (pairs > 0) {
-    const ShapeImprovement merged_shapes =
-        improve_shapes(merged, projector, &curves, merged_supports, merged_features,
-                       settings.shape_sweeps, traced_tips(merged, narrow, reach));
-    Round merged_best = rounds_from(
-        {std::move(merged), std::move(merged_features), std::move(merged_supports), merged_shapes});
-    const BarShapes with = bar_shapes(merged_best.mesh, narrow, reach),
+  if (merged_best) {
+    const BarShapes with = bar_shapes(merged_best->mesh, narrow, reach),
                     without = bar_shapes(best.mesh, narrow, reach);
     // Never at the cost of the worst away from narrow angles, where the promise is the bar
     // (lion.off at 10k: merged, 8.0° -> 13.8° at its 8° tip, 36.8° -> 28.2° away from it).
     if (judge_round(with, without) == Verdict::better &&
         with.away.quality >= without.away.quality && with.away.angle >= without.away.angle) {
-      best = std::move(merged_best);
+      best = std::move(*merged_best);
       result.obtuse_corners_split = 0;
       result.flat_pairs_merged = pairs;
     }
