@@ -164,33 +164,10 @@ Vec3 abs(const Vec3& w) {
   return {std::abs(w.x), std::abs(w.y), std::abs(w.z)};
 }
 
-// Filter 1: the sign of d = J·((v − x_i) + (v − x_j)) on the vertex's rounded position, or 0
-// when its error bound cannot certify it. A static error bound in plain doubles (this runs for
-// nearly every predicate, so it avoids BoundedDouble's per-operation bookkeeping). With u the
-// unit roundoff and e the vertex's error per coordinate, each term J_c·s_c of the dot product
-// is off by at most 6u·|J_c|(|v_c − x_ic| + |v_c − x_jc|) (roundings of J_c, the two
-// differences, their sum, the product and the two additions), plus 2e·|J_c| from v itself;
-// 8u instead of 6u covers the rounding of the bound's own arithmetic.
-int rounded_side(const Vec3& xi, const Vec3& xj, const RvdVertex& v) {
-  const Vec3 J = xj - xi, a = v.point - xi, b = v.point - xj;
-  const double d = dot(J, a + b);
-  const Vec3 aJ = abs(J);
-  const double spread = aJ.x * (std::abs(a.x) + std::abs(b.x)) +
-                        aJ.y * (std::abs(a.y) + std::abs(b.y)) +
-                        aJ.z * (std::abs(a.z) + std::abs(b.z));
-  const double bound = 8 * BoundedDouble::kU * spread +
-                       2 * (1 + 4 * BoundedDouble::kU) * v.error * (aJ.x + aJ.y + aJ.z) +
-                       BoundedDouble::kTiny;
-  if (d > bound) return 1;
-  if (d < -bound) return -1;
-  return 0;  // also when d or the bound is not finite
-}
-
 }  // namespace
 
-bool closer_to_cell(const ClipFrame& f, const RvdVertex& v, Index j, PredicateCounters& counters) {
-  ++counters.predicates;
-  if (const int s = rounded_side(f.seeds[f.cell], f.seeds[j], v); s != 0) return s < 0;
+bool closer_to_cell_past_filter(const ClipFrame& f, const RvdVertex& v, Index j,
+                                PredicateCounters& counters) {
   // Filter 2: the symbolic formula in bounded doubles.
   const Definition def = define(v);
   if (def.bisectors > 0) {

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "cvtmesh/rvd.hpp"
+#include "predicates/bounded_double.hpp"
 
 namespace cvtmesh::predicates {
 
@@ -23,11 +25,43 @@ struct PredicateCounters {
   std::size_t predicates = 0, exact_fallbacks = 0, perturbed_ties = 0;
 };
 
+// Filter 1 of closer_to_cell: the sign of d = J·((v − x_i) + (v − x_j)), J = x_j − x_i, on the
+// vertex's rounded position, or 0 when its error bound cannot certify it. A static error bound in
+// plain doubles, inline: it decides nearly every predicate of the RVD, and called out of line it
+// was a fifth of the clipping's time. With u the unit roundoff and e the vertex's error per
+// coordinate, each term J_c·s_c of the dot product is off by at most 6u·|J_c|(|v_c − x_ic| +
+// |v_c − x_jc|) (roundings of J_c, the two differences, their sum, the product and the two
+// additions), plus 2e·|J_c| from v itself; 8u instead of 6u covers the rounding of the bound's own
+// arithmetic.
+inline int rounded_side(const Vec3& xi, const Vec3& xj, const RvdVertex& v) {
+  constexpr double u = BoundedDouble::kU;
+  const Vec3 J = xj - xi, a = v.point - xi, b = v.point - xj;
+  const double d = dot(J, a + b);
+  const Vec3 aJ{std::abs(J.x), std::abs(J.y), std::abs(J.z)};
+  const double spread = aJ.x * (std::abs(a.x) + std::abs(b.x)) +
+                        aJ.y * (std::abs(a.y) + std::abs(b.y)) +
+                        aJ.z * (std::abs(a.z) + std::abs(b.z));
+  const double bound =
+      8 * u * spread + 2 * (1 + 4 * u) * v.error * (aJ.x + aJ.y + aJ.z) + BoundedDouble::kTiny;
+  if (d > bound) return 1;
+  if (d < -bound) return -1;
+  return 0;  // also when d or the bound is not finite
+}
+
+// closer_to_cell where rounded_side cannot decide: the symbolic formula in bounded doubles, then
+// exact arithmetic, then the perturbation.
+bool closer_to_cell_past_filter(const ClipFrame& frame, const RvdVertex& v, Index j,
+                                PredicateCounters& counters);
+
 // True when v is strictly closer to seed frame.cell than to seed j, in the perturbed sense: each
 // seed s carries an infinitesimal power-diagram weight ε^(s+1), so exact ties go to the seed of
 // lower index and every answer is definite. j must not be one of v's bisector symbols.
-bool closer_to_cell(const ClipFrame& frame, const RvdVertex& v, Index j,
-                    PredicateCounters& counters);
+inline bool closer_to_cell(const ClipFrame& frame, const RvdVertex& v, Index j,
+                           PredicateCounters& counters) {
+  ++counters.predicates;
+  if (const int s = rounded_side(frame.seeds[frame.cell], frame.seeds[j], v); s != 0) return s < 0;
+  return closer_to_cell_past_filter(frame, v, j, counters);
+}
 
 // The vertex where bisector (cell, j) crosses the polygon edge [a, b], which it separates.
 RvdVertex bisector_crossing(const ClipFrame& frame, const RvdVertex& a, const RvdVertex& b,
