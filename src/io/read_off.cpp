@@ -5,11 +5,11 @@
 #include "io/read_off.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <string>
 #include <string_view>
 
 #include "io/input_problem.hpp"
+#include "io/read_off_binary.hpp"
 #include "io/text_tokens.hpp"
 
 namespace cvtmesh {
@@ -42,7 +42,13 @@ class OffReader {
     } else if (tokens_.empty() || !is_integer(tokens_.front())) {
       fail_here("not an OFF file: expected the keyword OFF, got '" + first_token() + "'");
     }
-    if (header.binary) return read_binary(header);
+    if (header.binary) {
+      const int h = header.homogeneous ? 1 : 0;
+      return read_off_binary(path_, in_,
+                             {3 + h + (header.normal ? 3 + h : 0) + (header.colour ? 4 : 0) +
+                                  (header.texture ? 2 + h : 0),
+                              header.homogeneous, header.dimension});
+    }
     if (header.dimension) {
       const std::uint64_t dim = count("the dimension");
       if (dim != 3) fail_here("nOFF of dimension " + std::to_string(dim) + " (only 3 is read)");
@@ -149,60 +155,6 @@ class OffReader {
       fail_here("face " + std::to_string(f) + ": '" + std::string(token) + "' is not an integer");
     return *value;
   }
-
-  // Binary OFF: big-endian int32 counts, float32 vertex data, and per face an int32 corner
-  // count, the int32 indices, an int32 colour count and that many float32 colour components.
-  PolygonSoup read_binary(const Header& header) {
-    if (header.dimension) {
-      const std::int32_t dim = binary_int();
-      if (dim != 3) fail("binary nOFF of dimension " + std::to_string(dim) + " (only 3 is read)");
-    }
-    const std::int32_t vertices = binary_int();
-    const std::int32_t faces = binary_int();
-    binary_int();  // edge count, unused
-    if (vertices < 0 || faces < 0) fail("binary OFF with a negative vertex or face count");
-    const int h = header.homogeneous ? 1 : 0;
-    const int per_vertex = 3 + h + (header.normal ? 3 + h : 0) + (header.colour ? 4 : 0) +
-                           (header.texture ? 2 + h : 0);
-    PolygonSoup soup;
-    soup.points.reserve(capped(static_cast<std::uint64_t>(vertices)));
-    std::vector<float> values(static_cast<std::size_t>(per_vertex));
-    for (std::int32_t v = 0; v < vertices; ++v) {
-      for (float& value : values) value = binary_float();
-      const double w = header.homogeneous ? values[3] : 1.0;
-      soup.points.push_back({values[0] / w, values[1] / w, values[2] / w});
-    }
-    soup.polygons.reserve(capped(static_cast<std::uint64_t>(faces)));
-    for (std::int32_t f = 0; f < faces; ++f) {
-      const std::int32_t corners = binary_int();
-      if (corners < 0 || static_cast<std::uint64_t>(corners) > file_size_ / 4)
-        fail("binary OFF face " + std::to_string(f) + " announces " + std::to_string(corners) +
-             " corners");
-      std::vector<std::size_t> polygon(static_cast<std::size_t>(corners));
-      for (std::size_t& corner : polygon) {
-        const std::int32_t id = binary_int();
-        if (id < 0 || id >= vertices) out_of_range(static_cast<std::uint64_t>(f), id, vertices);
-        corner = static_cast<std::size_t>(id);
-      }
-      const std::int32_t colours = binary_int();
-      if (colours < 0 || colours > 4)
-        fail("binary OFF face " + std::to_string(f) + " has " + std::to_string(colours) +
-             " colour components (at most 4)");
-      for (std::int32_t c = 0; c < colours; ++c) binary_float();
-      soup.polygons.push_back(std::move(polygon));
-    }
-    return soup;
-  }
-
-  std::uint32_t binary_word() {
-    unsigned char bytes[4];
-    if (!in_.read(reinterpret_cast<char*>(bytes), 4))
-      fail("truncated binary OFF data: the file ends early");
-    return std::uint32_t{bytes[0]} << 24 | std::uint32_t{bytes[1]} << 16 |
-           std::uint32_t{bytes[2]} << 8 | std::uint32_t{bytes[3]};
-  }
-  std::int32_t binary_int() { return static_cast<std::int32_t>(binary_word()); }
-  float binary_float() { return std::bit_cast<float>(binary_word()); }
 
   // A count from the header reserves no more than the file could hold, so that a corrupt count
   // fails on the missing data instead of allocating gigabytes.
