@@ -1,5 +1,6 @@
 // Feature detection (issue 5, paper §4.3) and remeshing that keeps features and boundaries.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -755,6 +756,27 @@ TEST(RemeshFeaturesSharedData, ObtuseBoundaryCornersAreSplitWhereThatShapesBette
   EXPECT_GE(q.angle_min_deg, 30.0);
   EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(in)));
   EXPECT_EQ(exact_corners(in, r.features, r.mesh), r.features.corners.size());
+}
+
+TEST(RemeshFeaturesSharedData, TheFinishingSweepsRunAtOnceAndGiveTheSameOutputOnAnyThreadCount) {
+  if (!std::filesystem::exists(shared_data() / "corpus" / "ALSTOM_TEST4.off"))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  // At 1k, components of this CAD part get both other candidate outputs, obtuse boundary
+  // corners split and flat pairs merged (as measured), whose sweeps run beside the main one's
+  // (finish_output): each chain in its fixed order, so one thread and two give the same.
+  const TriangleMesh in = shared_mesh("corpus/ALSTOM_TEST4.off");
+  RemeshSettings s;
+  s.vertices = 1000;
+  const RemeshResult all = remesh(in, s);
+  RemeshResult one;
+  {
+    const tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 1);
+    one = remesh(in, s);
+  }
+  EXPECT_EQ(all.mesh.vertices, one.mesh.vertices);
+  EXPECT_EQ(all.mesh.triangles, one.mesh.triangles);
+  EXPECT_EQ(all.obtuse_corners_split, one.obtuse_corners_split);
+  EXPECT_EQ(all.flat_pairs_merged, one.flat_pairs_merged);
 }
 
 TEST(RemeshFeaturesSharedData, JointAt3kKeepsCornersAndCreases) {
