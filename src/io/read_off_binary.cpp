@@ -39,7 +39,8 @@ class Attempt {
     std::int32_t vertices = 0, faces = 0, edges = 0;
     if (!next_int(vertices) || !next_int(faces) || !next_int(edges)) return std::nullopt;
     if (vertices < 0 || faces < 0) return fail("binary OFF with a negative vertex or face count");
-    // Counts beyond what the file holds fail on the missing data, before reserving for them.
+    // A count beyond what the file holds fails on the missing data; what is reserved for it is
+    // capped by the file's size, so a corrupt count allocates no gigabytes.
     const std::size_t words = bytes_.size() / 4;
     PolygonSoup soup;
     soup.points.reserve(std::min<std::size_t>(static_cast<std::size_t>(vertices), words));
