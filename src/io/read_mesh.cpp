@@ -131,9 +131,8 @@ std::string out_of_range_index(const PolygonSoup& soup) {
     for (std::size_t v : soup.polygons[f]) {
       if (v >= soup.points.size()) {
         // Shown as a signed number: CGAL stores a negative (relative) OBJ index wrapped around.
-        return "face " + std::to_string(f) + " references vertex " +
-               std::to_string(static_cast<long long>(v)) + ", out of range (the file has " +
-               std::to_string(soup.points.size()) + " vertices)";
+        return vertex_out_of_range("face " + std::to_string(f),
+                                   std::to_string(static_cast<long long>(v)), soup.points.size());
       }
     }
   }

@@ -172,8 +172,8 @@ class OffReader {
   }
 
   [[noreturn]] void out_of_range(std::uint64_t f, long long id, std::uint64_t vertices) const {
-    fail("face " + std::to_string(f) + " references vertex " + std::to_string(id) +
-         ", out of range (the file has " + std::to_string(vertices) + " vertices)");
+    fail(vertex_out_of_range("face " + std::to_string(f), std::to_string(id),
+                             static_cast<std::size_t>(vertices)));
   }
 
   [[noreturn]] void fail_here(const std::string& problem) const {

@@ -63,8 +63,8 @@ class Attempt {
         std::int32_t id = 0;
         if (!next_int(id)) return std::nullopt;
         if (id < 0 || id >= vertices)
-          return fail("face " + std::to_string(f) + " references vertex " + std::to_string(id) +
-                      ", out of range (the file has " + std::to_string(vertices) + " vertices)");
+          return fail(vertex_out_of_range("face " + std::to_string(f), std::to_string(id),
+                                          static_cast<std::size_t>(vertices)));
         corner = static_cast<std::size_t>(id);
       }
       if (layout_.face_colours) {

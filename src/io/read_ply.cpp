@@ -279,9 +279,8 @@ class PlyReader {
   // `what` `item`: the face or triangle strip that lists the id, for the error.
   std::size_t vertex_id(double value, const char* what, std::uint64_t item) const {
     if (!(value >= 0 && value < static_cast<double>(vertex_count_)))
-      fail(std::string(what) + " " + std::to_string(item) + " references vertex " +
-           number_text(value) + ", out of range (the file has " + std::to_string(vertex_count_) +
-           " vertices)");
+      fail(vertex_out_of_range(std::string(what) + " " + std::to_string(item), number_text(value),
+                               vertex_count_));
     return static_cast<std::size_t>(value);
   }
 
