@@ -1,16 +1,22 @@
 // Hot paths of the quality report: topology analysis, per-triangle metrics, Hausdorff distance
-// and mesh reading, and the walk of a mesh's edges that feature detection, components, topology
-// control and the finishing steps share (edge_uses), on generated meshes (icosphere level 6 =
+// and mesh reading; the walk of a mesh's edges that feature detection, components, topology
+// control and the finishing steps share (edge_uses); and the passes over the whole input before
+// the CVT starts (repair, feature detection), on one thread while the other builds the AABB tree,
+// so that a large scan's remesh to a few thousand vertices spends a third of its time there
+// (igea.ply at 1k); on generated meshes (icosphere level 6 =
 // 81,920 triangles, level 7 = 327,680, about igea's size). Compare a figure against
 // `BM_SurfaceArea` of the same size, the cheapest possible pass over the triangles, run in the same
 // process.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <map>
 
+#include "cvtmesh/features.hpp"
 #include "cvtmesh/hausdorff.hpp"
 #include "cvtmesh/io.hpp"
 #include "cvtmesh/quality.hpp"
+#include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/edge_uses.hpp"
 #include "support/shapes.hpp"
@@ -47,6 +53,31 @@ void BM_EdgeUses(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
 }
 BENCHMARK(BM_EdgeUses)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+// The repair every read input goes through (duplicate vertices and triangles, zero-area
+// triangles, orientation), on a clean mesh, as most inputs are: each pass finds nothing.
+void BM_RepairMesh(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    state.PauseTiming();
+    TriangleMesh copy = m;
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(repair_mesh(copy));
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_RepairMesh)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+// Feature detection as a remesh to 10k vertices runs it, on a surface without creases (the
+// default's walk over every edge and triangle, before the CVT starts).
+void BM_DetectFeatures(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  FeatureSettings settings;
+  settings.scale = std::sqrt(surface_area(m) / (std::sqrt(3.0) / 2 * 10'000));
+  for (auto _ : state) benchmark::DoNotOptimize(detect_features(m, settings));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_DetectFeatures)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 
 void BM_MeasureQuality(benchmark::State& state) {
   const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));

@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/features.hpp"
 #include "cvtmesh/quality.hpp"
+#include "cvtmesh/rvd_consumers.hpp"
 #include "features/crease_at_scale.hpp"
 #include "features/edge_uses.hpp"
 #include "features/feature_sectors.hpp"
@@ -35,17 +38,13 @@ constexpr double kShortestStep = 0.55;
 // rim of a small hole or the outline of a small part, whose corners are its shape.
 constexpr double kShortestJaggedNetwork = 2;
 
-Vec3 unit_normal(const TriangleMesh& mesh, std::size_t t) {
-  const auto [a, b, c] = mesh.corners(t);
-  return unit_normal(a, b, c);
-}
-
-// Whether the two triangles' normals make an angle above the threshold, their orientations
-// made consistent along the edge first (a mesh read as a soup may not be oriented).
-bool sharp(const TriangleMesh& mesh, const Edge& e, std::size_t t0, std::size_t t1,
-           double cos_threshold) {
-  const Vec3 n0 = unit_normal(mesh, t0);
-  Vec3 n1 = unit_normal(mesh, t1);
+// Whether the two triangles' normals (`normal`, per triangle) make an angle above the
+// threshold, their orientations made consistent along the edge first (a mesh read as a soup may
+// not be oriented).
+bool sharp(const TriangleMesh& mesh, const std::vector<Vec3>& normal, const Edge& e, std::size_t t0,
+           std::size_t t1, double cos_threshold) {
+  const Vec3 n0 = normal[t0];
+  Vec3 n1 = normal[t1];
   if (runs_forward(mesh.triangles[t0], e[0], e[1]) == runs_forward(mesh.triangles[t1], e[0], e[1]))
     n1 = -1.0 * n1;
   if (dot(n0, n0) == 0 || dot(n1, n1) == 0) return false;  // no normal: no angle
@@ -272,12 +271,15 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
   std::vector<Edge> sharp_edges;     // kept for being sharp, and for nothing else
   std::vector<Edge> boundary_edges;  // both sorted, as `uses` is
   const std::vector<EdgeUse> uses = edge_uses(mesh);
+  // Each triangle's normal is read across each of its edges: found once each, in parallel
+  // (three times each, serially, they were half of this step on igea.ply).
+  const std::vector<Vec3> normal = settings.sharp_edges ? unit_normals(mesh) : std::vector<Vec3>{};
   for_each_edge(uses, [&](std::size_t k, std::size_t end) {
     const std::size_t count = end - k;
     if (count != 2) {
       f.edges.push_back(uses[k].edge);
       if (count == 1) boundary_edges.push_back(uses[k].edge);
-    } else if (settings.sharp_edges && sharp(mesh, uses[k].edge, uses[k].triangle(),
+    } else if (settings.sharp_edges && sharp(mesh, normal, uses[k].edge, uses[k].triangle(),
                                              uses[k + 1].triangle(), cos_threshold)) {
       f.edges.push_back(uses[k].edge);
       sharp_edges.push_back(uses[k].edge);
@@ -320,16 +322,21 @@ Features detect_features(const TriangleMesh& mesh, const FeatureSettings& settin
     std::vector<double> lengths;
     for (const FeatureCurve& c : f.curves) lengths.push_back(curve_length(mesh, c));
     // The model a free crease belongs to: its connected component, whose area's square root
-    // measures it.
-    UnionFind parts(mesh.vertices.size());
-    for (const Triangle& t : mesh.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
-    std::vector<double> part_area(mesh.vertices.size(), 0);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const auto [p, q, r] = mesh.corners(t);
-      part_area[parts.find(mesh.triangles[t][0])] += triangle_area(p, q, r);
-    }
+    // measures it. Found on the first free crease that asks (most inputs have none: a walk over
+    // every triangle saved).
+    std::optional<UnionFind> parts;
+    std::vector<double> part_area;
     const auto model_size = [&](const FeatureCurve& c) {
-      return std::sqrt(part_area[parts.find(c.vertices.front())]);
+      if (!parts) {
+        parts.emplace(mesh.vertices.size());
+        for (const Triangle& t : mesh.triangles) parts->unite(t[0], t[1]), parts->unite(t[0], t[2]);
+        part_area.assign(mesh.vertices.size(), 0);
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+          const auto [p, q, r] = mesh.corners(t);
+          part_area[parts->find(mesh.triangles[t][0])] += triangle_area(p, q, r);
+        }
+      }
+      return std::sqrt(part_area[parts->find(c.vertices.front())]);
     };
     auto feature_at_scale = [&](std::size_t c) {
       const double length = lengths[c];

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <tuple>
 
 #include "features/edge_uses.hpp"
 #include "finish/move_limits.hpp"
@@ -68,15 +69,24 @@ struct Creases {
 
 Creases creases_of(const TriangleMesh& surface, const Features& features, double min_length) {
   Creases creases;
-  const std::vector<EdgeUse> uses = edge_uses(surface);
+  // Only the uses of edges long enough are sorted: an input finer than the output has none, and
+  // sorting all its edges' uses was 2% of a remesh of igea.ply's 270k triangles to 1k.
+  std::vector<EdgeUse> uses;
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Edge e = edge_of(surface.triangles[t][k], surface.triangles[t][(k + 1) % 3]);
+      if (distance(surface.vertices[e[0]], surface.vertices[e[1]]) >= min_length)
+        uses.push_back({e, 3 * t + k});
+    }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
+    return std::tie(a.edge, a.corner) < std::tie(b.edge, b.corner);
+  });
   for_each_edge(uses, [&](std::size_t i, std::size_t j) {
     const Edge& e = uses[i].edge;
     if (j - i != 2 || std::binary_search(features.edges.begin(), features.edges.end(), e)) return;
     const Vec3 n0 = unit_normal_of(surface, surface.triangles[uses[i].triangle()]);
     const Vec3 n1 = unit_normal_of(surface, surface.triangles[uses[i + 1].triangle()]);
-    if (dot(n0, n1) >= kCreaseCos ||
-        distance(surface.vertices[e[0]], surface.vertices[e[1]]) < min_length)
-      return;
+    if (dot(n0, n1) >= kCreaseCos) return;
     creases.segments.emplace_back(point(surface.vertices[e[0]]), point(surface.vertices[e[1]]));
     creases.normals.push_back({n0, n1});
   });

@@ -21,12 +21,9 @@ struct Across {
 // Calls visit(first side, second side) for each edge of exactly two triangles.
 template <class Visit>
 void for_manifold_edges(const std::vector<TriangleSide>& sides, const Visit& visit) {
-  for (std::size_t i = 0; i < sides.size();) {
-    std::size_t j = i;
-    while (j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi) ++j;
+  for_each_side_run(sides, [&](std::size_t i, std::size_t j) {
     if (j - i == 2) visit(sides[i], sides[i + 1]);
-    i = j;
-  }
+  });
 }
 
 double area(const TriangleMesh& mesh, std::size_t t) {
@@ -37,8 +34,12 @@ double area(const TriangleMesh& mesh, std::size_t t) {
 }  // namespace
 
 std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh) {
+  return triangles_to_flip(mesh, sorted_sides(mesh));
+}
+
+std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh,
+                                           const std::vector<TriangleSide>& sides) {
   const std::size_t nt = mesh.triangles.size();
-  const std::vector<TriangleSide> sides = sorted_sides(mesh);
   // Most meshes are consistent already: that is all there is to find out then.
   bool consistent = true;
   for_manifold_edges(sides, [&](const TriangleSide& a, const TriangleSide& b) {

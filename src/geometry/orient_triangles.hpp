@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cvtmesh/mesh.hpp"
+#include "geometry/triangle_sides.hpp"
 
 namespace cvtmesh {
 
@@ -16,6 +17,9 @@ namespace cvtmesh {
 // orientation of the larger part of the patch's area (on a tie, that of its first triangle).
 // A patch that no orientation makes consistent (a Möbius strip) is left as it is. Sorted.
 std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh);
+// The same, from the mesh's sorted_sides, where the caller has them.
+std::vector<std::size_t> triangles_to_flip(const TriangleMesh& mesh,
+                                           const std::vector<TriangleSide>& sides);
 
 // Flips the given triangles: their corners 1 and 2 swap.
 void flip_triangles(TriangleMesh& mesh, const std::vector<std::size_t>& triangles);

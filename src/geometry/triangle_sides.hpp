@@ -26,4 +26,16 @@ std::vector<TriangleSide> sorted_sides(const TriangleMesh& mesh);
 std::vector<TriangleSide> sorted_sides(std::size_t vertices,
                                        const std::vector<Triangle>& triangles);
 
+// Calls visit(i, j) for each edge's run of sides, sides[i] to sides[j - 1] (j - i triangles have
+// it), in order.
+template <class Visit>
+void for_each_side_run(const std::vector<TriangleSide>& sides, Visit&& visit) {
+  for (std::size_t i = 0, j = 0; i < sides.size(); i = j) {
+    for (j = i + 1; j < sides.size() && sides[j].lo == sides[i].lo && sides[j].hi == sides[i].hi;
+         ++j) {
+    }
+    visit(i, j);
+  }
+}
+
 }  // namespace cvtmesh

@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -31,7 +32,7 @@ namespace cvtmesh {
 namespace {
 
 using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-using Polygon = std::vector<std::size_t>;
+using Polygon = std::span<const std::size_t>;
 
 // A binary STL is an 80-byte header, a uint32 triangle count, then 50 bytes per triangle. CGAL
 // does not say why a short file fails, so check the size here.
@@ -91,7 +92,8 @@ bool read_with_cgal(MeshFormat format, std::istream& in, PolygonSoup& soup, bool
       std::vector<std::array<std::size_t, 3>> triangles;
       ok = CGAL::IO::read_STL(in, points, triangles, np);
       if (ok) unweld_nonmanifold_corners(points, triangles);
-      for (const auto& t : triangles) soup.polygons.emplace_back(t.begin(), t.end());
+      soup.reserve_polygons(triangles.size());
+      for (const auto& t : triangles) soup.add_polygon({t[0], t[1], t[2]});
       break;
     }
   }
@@ -127,8 +129,8 @@ std::string non_finite_vertex(const PolygonSoup& soup) {
 }
 
 std::string out_of_range_index(const PolygonSoup& soup) {
-  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
-    for (std::size_t v : soup.polygons[f]) {
+  for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
+    for (std::size_t v : soup.polygon(f)) {
       if (v >= soup.points.size()) {
         // Shown as a signed number: CGAL stores a negative (relative) OBJ index wrapped around.
         return vertex_out_of_range("face " + std::to_string(f),
@@ -140,18 +142,18 @@ std::string out_of_range_index(const PolygonSoup& soup) {
 }
 
 std::string short_face(const PolygonSoup& soup) {
-  for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
-    if (soup.polygons[f].size() < 3)
-      return "face " + std::to_string(f) + " has " + std::to_string(soup.polygons[f].size()) +
+  for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
+    if (soup.polygon(f).size() < 3)
+      return "face " + std::to_string(f) + " has " + std::to_string(soup.polygon(f).size()) +
              " corners (a face needs at least 3)";
   }
   return "";
 }
 
 std::string emptiness(const PolygonSoup& soup) {
-  if (soup.points.empty() && soup.polygons.empty()) return "empty mesh: no vertices or faces";
+  if (soup.points.empty() && soup.polygon_count() == 0) return "empty mesh: no vertices or faces";
   if (soup.points.empty()) return "empty mesh: no vertices";
-  if (soup.polygons.empty()) return "empty mesh: no faces";
+  if (soup.polygon_count() == 0) return "empty mesh: no faces";
   return "";
 }
 
@@ -207,7 +209,7 @@ std::string find_non_finite_token(const std::filesystem::path& path) {
 }
 
 // The triangles of `poly` as a fan around its corner `apex`.
-void fan(const Polygon& poly, std::size_t apex, std::vector<Triangle>& out) {
+void fan(Polygon poly, std::size_t apex, std::vector<Triangle>& out) {
   const std::size_t n = poly.size();
   for (std::size_t k = 1; k + 1 < n; ++k)
     out.push_back({static_cast<Index>(poly[apex]), static_cast<Index>(poly[(apex + k) % n]),
@@ -226,7 +228,7 @@ std::array<Index, 3> corners_of(Triangle t) {
 // is fanned around its next corner that makes none, if one does. The triangles' corners are
 // sorted once (a map of them all cost a large quad mesh twice its memory); the few fans made
 // again are counted apart.
-void refan_duplicates(const std::vector<Polygon>& polygons, std::vector<Triangle>& triangles) {
+void refan_duplicates(const PolygonSoup& soup, std::vector<Triangle>& triangles) {
   std::vector<std::array<Index, 3>> sorted(triangles.size());
   std::transform(triangles.begin(), triangles.end(), sorted.begin(), corners_of);
   std::sort(sorted.begin(), sorted.end());
@@ -239,7 +241,8 @@ void refan_duplicates(const std::vector<Polygon>& polygons, std::vector<Triangle
   };
   std::vector<Triangle> again;
   auto end = triangles.begin();  // past the last polygon's fan: each has its corners less two
-  for (const Polygon& poly : polygons) {
+  for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
+    const Polygon poly = soup.polygon(f);
     const auto own = end;
     end += static_cast<std::ptrdiff_t>(poly.size() - 2);  // read_mesh refuses shorter faces
     if (poly.size() < 4) continue;
@@ -264,14 +267,15 @@ TriangleMesh triangulate(const std::filesystem::path& path, PolygonSoup& soup, R
   TriangleMesh mesh;
   mesh.vertices.reserve(soup.points.size());
   for (const auto& [x, y, z] : soup.points) mesh.vertices.push_back({x, y, z});
-  report.polygons_in_file = soup.polygons.size();
-  mesh.triangles.reserve(soup.polygons.size());
-  for (const Polygon& poly : soup.polygons) {
+  report.polygons_in_file = soup.polygon_count();
+  mesh.triangles.reserve(soup.polygon_count());
+  for (std::size_t f = 0; f < soup.polygon_count(); ++f) {
+    const Polygon poly = soup.polygon(f);
     // Fan split: exact for triangles and convex polygons, the common case in mesh files.
     if (poly.size() > 3) ++report.polygons_split;
     fan(poly, 0, mesh.triangles);
   }
-  if (report.polygons_split > 0) refan_duplicates(soup.polygons, mesh.triangles);
+  if (report.polygons_split > 0) refan_duplicates(soup, mesh.triangles);
   return mesh;
 }
 

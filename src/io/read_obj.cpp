@@ -85,17 +85,16 @@ class ObjReader {
   // reaches before the first vertex is kept wrapped around (the caller's check of ids shows it
   // signed), as is one past the last.
   void face() {
-    std::vector<std::size_t>& polygon = soup_.polygons.emplace_back();
-    polygon.reserve(words_.size() - 1);
     for (std::size_t k = 1; k < words_.size(); ++k) {
       const std::string_view corner = words_[k];
       const std::optional<long long> id = text_integer(corner.substr(0, corner.find('/')));
       if (!id || *id == 0)
-        fail("face " + std::to_string(soup_.polygons.size() - 1) + ": corner '" +
-             printable(corner) + "' is no vertex id" + (id ? " (they start at 1)" : ""));
+        fail("face " + std::to_string(soup_.polygon_count()) + ": corner '" + printable(corner) +
+             "' is no vertex id" + (id ? " (they start at 1)" : ""));
       const long long count = static_cast<long long>(soup_.points.size());
-      polygon.push_back(static_cast<std::size_t>(*id >= 1 ? *id - 1 : count + *id));
+      soup_.add_corner(static_cast<std::size_t>(*id >= 1 ? *id - 1 : count + *id));
     }
+    soup_.end_polygon();
   }
 
   // A word as a message may show it: at most 40 characters, and not binary data.

@@ -61,10 +61,10 @@ class OffReader {
       if (!next_line()) truncated(vertices, faces, v, 0);
       soup.points.push_back(vertex(v, header.homogeneous));
     }
-    soup.polygons.reserve(capped(faces));
+    soup.reserve_polygons(capped(faces));
     for (std::uint64_t f = 0; f < faces; ++f) {
       if (!next_line()) truncated(vertices, faces, vertices, f);
-      soup.polygons.push_back(face(f, vertices));
+      face(f, vertices, soup);
     }
     return soup;
   }
@@ -135,18 +135,18 @@ class OffReader {
     return *value;
   }
 
-  std::vector<std::size_t> face(std::uint64_t f, std::uint64_t vertices) {
+  // Face f, added to `soup`.
+  void face(std::uint64_t f, std::uint64_t vertices, PolygonSoup& soup) {
     long long corners = index(tokens_[0], f);
     if (corners < 0 || static_cast<std::size_t>(corners) > tokens_.size() - 1)
       fail_here("face " + std::to_string(f) + " announces " + std::string(tokens_[0]) +
                 " corners, its line has " + std::to_string(tokens_.size() - 1) + " more numbers");
-    std::vector<std::size_t> polygon(static_cast<std::size_t>(corners));
-    for (std::size_t k = 0; k < polygon.size(); ++k) {
+    for (std::size_t k = 0; k < static_cast<std::size_t>(corners); ++k) {
       const long long id = index(tokens_[k + 1], f);
       if (id < 0 || static_cast<std::uint64_t>(id) >= vertices) out_of_range(f, id, vertices);
-      polygon[k] = static_cast<std::size_t>(id);
+      soup.add_corner(static_cast<std::size_t>(id));
     }
-    return polygon;
+    soup.end_polygon();
   }
 
   long long index(std::string_view token, std::uint64_t f) {

@@ -51,22 +51,22 @@ class Attempt {
       const double w = header.homogeneous ? values[3] : 1.0;
       soup.points.push_back({values[0] / w, values[1] / w, values[2] / w});
     }
-    soup.polygons.reserve(std::min<std::size_t>(static_cast<std::size_t>(faces), words));
+    soup.reserve_polygons(std::min<std::size_t>(static_cast<std::size_t>(faces), words / 4));
     for (std::int32_t f = 0; f < faces; ++f) {
       std::int32_t corners = 0;
       if (!next_int(corners)) return std::nullopt;
       if (corners < 0 || static_cast<std::size_t>(corners) > words)
         return fail("binary OFF face " + std::to_string(f) + " announces " +
                     std::to_string(corners) + " corners");
-      std::vector<std::size_t> polygon(static_cast<std::size_t>(corners));
-      for (std::size_t& corner : polygon) {
+      for (std::int32_t k = 0; k < corners; ++k) {
         std::int32_t id = 0;
         if (!next_int(id)) return std::nullopt;
         if (id < 0 || id >= vertices)
           return fail(vertex_out_of_range("face " + std::to_string(f), std::to_string(id),
                                           static_cast<std::size_t>(vertices)));
-        corner = static_cast<std::size_t>(id);
+        soup.add_corner(static_cast<std::size_t>(id));
       }
+      soup.end_polygon();
       if (layout_.face_colours) {
         std::int32_t colours = 0;
         if (!next_int(colours)) return std::nullopt;
@@ -77,7 +77,6 @@ class Attempt {
         for (std::int32_t c = 0; c < colours; ++c)
           if (!next_float(ignored)) return std::nullopt;
       }
-      soup.polygons.push_back(std::move(polygon));
     }
     return soup;
   }

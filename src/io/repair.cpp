@@ -265,27 +265,37 @@ std::size_t remove_unreferenced_vertices(TriangleMesh& mesh, std::vector<Index>&
 }  // namespace
 
 std::size_t remove_duplicate_triangles(TriangleMesh& mesh) {
-  // Each triangle's sorted corners with its index, sorted once: copies of a triangle end up
-  // adjacent, the first in file order first (the index breaks ties).
-  struct Keyed {
-    Triangle key;
-    std::size_t index;
-  };
-  std::vector<Keyed> keyed(mesh.triangles.size());
-  for (std::size_t t = 0; t < keyed.size(); ++t) {
-    keyed[t] = {mesh.triangles[t], t};
-    std::sort(keyed[t].key.begin(), keyed[t].key.end());
+  // Each triangle's sorted corners: copies of a triangle have the same. Bucketed by the smallest
+  // (a counting sort, stable: each bucket in file order), then each bucket, a vertex's few
+  // triangles, sorted by the rest and the index: copies end up adjacent, the first in file order
+  // first. Linear where one sort of all triangles was a tenth of repairing a 270k-triangle scan.
+  const std::size_t nt = mesh.triangles.size();
+  std::vector<Triangle> key(mesh.triangles);
+  Index ids = 0;
+  for (Triangle& k : key) {
+    std::sort(k.begin(), k.end());
+    ids = std::max(ids, k[2] + 1);
   }
-  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
-    return std::tie(a.key, a.index) < std::tie(b.key, b.index);
-  });
-  std::vector<bool> keep(keyed.size(), true);
-  for (std::size_t i = 1; i < keyed.size(); ++i)
-    if (keyed[i].key == keyed[i - 1].key) keep[keyed[i].index] = false;
+  std::vector<std::size_t> start(static_cast<std::size_t>(ids) + 1, 0);
+  for (const Triangle& k : key) ++start[k[0] + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::size_t> order(nt), next(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < nt; ++t) order[next[key[t][0]]++] = t;
+  std::vector<bool> keep(nt, true);
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    const auto begin = order.begin() + static_cast<std::ptrdiff_t>(start[v]);
+    const auto end = order.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+    if (end - begin < 2) continue;
+    std::sort(begin, end, [&](std::size_t a, std::size_t b) {
+      return std::tie(key[a][1], key[a][2], a) < std::tie(key[b][1], key[b][2], b);
+    });
+    for (auto i = begin + 1; i != end; ++i)
+      if (key[*i] == key[*(i - 1)]) keep[*i] = false;
+  }
   std::size_t n = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+  for (std::size_t t = 0; t < nt; ++t)
     if (keep[t]) mesh.triangles[n++] = mesh.triangles[t];
-  const std::size_t removed = mesh.triangles.size() - n;
+  const std::size_t removed = nt - n;
   mesh.triangles.resize(n);
   return removed;
 }

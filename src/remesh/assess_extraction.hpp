@@ -24,7 +24,8 @@ struct SpecialEdges {
   std::vector<bool> boundary_curve, boundary_vertex, branch_curve, branch_vertex;
 };
 
-// From the input alone: found once for all the rounds.
+// From the input alone: found once for all the rounds. Empty vectors where the input has no
+// boundary and no non-manifold edge (none is read then).
 SpecialEdges special_edges(const MendContext& m);
 
 // An extraction, finished as it would be returned, and what it lacks: the links it cuts that

@@ -17,6 +17,7 @@
 #include "features/renumber_features.hpp"
 #include "geometry/even_spacing.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/triangle_sides.hpp"
 #include "geometry/union_find.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/branch_curves.hpp"
@@ -81,45 +82,48 @@ bool one_part_without_pinches(const TriangleMesh& mesh, UnionFind& sets, UnionFi
 // vertex has a copy per fan, the junction's vertices (but those passed by) are pinches, and its
 // edges are each part's `branch_edges`.
 // Without `passed_by`, none where the whole is one part without pinches (most inputs): a copy of
-// it would only be freed again (igea.ply: 35 of the 107 ms that splitting took).
+// it would only be freed again (igea.ply: 35 of the 107 ms that splitting took). `sides`: the
+// mesh's sorted_sides where the caller has them (empty: found here).
 std::vector<Component> split_components(const TriangleMesh& mesh,
-                                        const std::vector<bool>* passed_by) {
+                                        const std::vector<bool>* passed_by,
+                                        std::vector<TriangleSide> sides) {
   const std::size_t triangles = mesh.triangles.size();
   UnionFind sets(triangles), fans(3 * triangles);
   std::vector<bool> branching(mesh.vertices.size(), false);
-  const std::vector<EdgeUse> uses = edge_uses(mesh);
+  if (sides.empty()) sides = sorted_sides(mesh);
   const auto corner = [&](std::size_t t, Index v) {
     const Triangle& f = mesh.triangles[t];
     return 3 * t + static_cast<std::size_t>(f[0] == v ? 0 : f[1] == v ? 1 : 2);
   };
   std::vector<Edge> branch;  // edges of three or more triangles, sorted
-  for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+  for_each_side_run(sides, [&](std::size_t i, std::size_t j) {
     if (!passed_by)
-      for (std::size_t k = i + 1; k < j; ++k) sets.unite(uses[k].triangle(), uses[i].triangle());
+      for (std::size_t k = i + 1; k < j; ++k) sets.unite(sides[k].triangle, sides[i].triangle);
     if (passed_by && j - i > 2) {  // undone: the edge's triangles join as sheets only
-      branch.push_back(uses[i].edge);
+      branch.push_back({sides[i].lo, sides[i].hi});
       return;
     }
-    for (const Index v : uses[i].edge) {
-      if (j - i == 2) fans.unite(corner(uses[i].triangle(), v), corner(uses[i + 1].triangle(), v));
+    for (const Index v : {sides[i].lo, sides[i].hi}) {
+      if (j - i == 2) fans.unite(corner(sides[i].triangle, v), corner(sides[i + 1].triangle, v));
       if (j - i > 2) branching[v] = true;
     }
   });
   if (passed_by) {
     // Sheets: triangles joined across edges of two triangles; then one sheet's triangles on a
     // junction edge joined in their fans.
-    for_each_edge(uses, [&](std::size_t i, std::size_t j) {
-      if (j - i == 2) sets.unite(uses[i + 1].triangle(), uses[i].triangle());
+    for_each_side_run(sides, [&](std::size_t i, std::size_t j) {
+      if (j - i == 2) sets.unite(sides[i + 1].triangle, sides[i].triangle);
     });
-    for_each_edge(uses, [&](std::size_t i, std::size_t j) {
+    for_each_side_run(sides, [&](std::size_t i, std::size_t j) {
       if (j - i <= 2) return;
       for (std::size_t k = i; k < j; ++k)
         for (std::size_t l = k + 1; l < j; ++l)
-          if (sets.find(uses[k].triangle()) == sets.find(uses[l].triangle()))
-            for (const Index v : uses[i].edge)
-              fans.unite(corner(uses[k].triangle(), v), corner(uses[l].triangle(), v));
+          if (sets.find(sides[k].triangle) == sets.find(sides[l].triangle))
+            for (const Index v : {sides[i].lo, sides[i].hi})
+              fans.unite(corner(sides[k].triangle, v), corner(sides[l].triangle, v));
     });
   }
+  std::vector<TriangleSide>().swap(sides);  // freed before the parts are copied out
   if (!passed_by && one_part_without_pinches(mesh, sets, fans, branching)) return {};
   std::vector<Index> component_of_root(triangles, kNoIndex);
   std::vector<std::vector<Index>> triangles_of;  // per component, in input order
@@ -535,16 +539,20 @@ RemeshSettings with_junction_split(RemeshSettings settings, const BranchCurves& 
 }
 
 // The components (or, with `junction`, the sheets) of `input` remeshed apart and welded; none
-// when the sheets' outputs do not meet along the junction.
+// when the sheets' outputs do not meet along the junction. `sides`: the input's sorted_sides, or
+// empty.
 std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const RemeshSettings& given,
-                                         const BranchCurves* junction) {
+                                         const BranchCurves* junction,
+                                         std::vector<TriangleSide> sides) {
   const bool split = junction && !junction->added.empty();
   const TriangleMesh& mesh = split ? junction->mesh : input;
   const RemeshSettings settings = split ? with_junction_split(given, *junction) : given;
   std::vector<bool> passed_by(junction ? mesh.vertices.size() : 0);
   for (Index v = 0; v < passed_by.size(); ++v)
     passed_by[v] = junction->on_curve[v] && !junction->corner[v];
-  std::vector<Component> parts = split_components(mesh, junction ? &passed_by : nullptr);
+  if (split) sides.clear();  // the input's, not the split mesh's
+  std::vector<Component> parts =
+      split_components(mesh, junction ? &passed_by : nullptr, std::move(sides));
   // A component without area (degenerate triangles only) has nothing to remesh: the whole
   // gives it no seed either.
   std::erase_if(parts, [](const Component& part) { return !(part.area > 0); });
@@ -655,10 +663,11 @@ std::tuple<bool, std::ptrdiff_t, double> junction_score(const RemeshResult& r,
 
 }  // namespace
 
-RemeshResult remesh_by_component(const TriangleMesh& input, const RemeshSettings& given) {
+RemeshResult remesh_by_component(const TriangleMesh& input, const RemeshSettings& given,
+                                 std::vector<TriangleSide> sides) {
   if (!given.initial_seeds.empty()) return remesh_unit_topology_first(input, given).result;
   const auto start = std::chrono::steady_clock::now();
-  RemeshResult first = *remesh_parts(input, given, nullptr);
+  RemeshResult first = *remesh_parts(input, given, nullptr, std::move(sides));
   if (first.input_topology.nonmanifold_edges == 0 || first.time_limit_reached) return first;
   // Sheets meeting along edges of three or more triangles, remeshed whole, may join beside the
   // junction where they meet at a shallow angle (an icosphere with flaps 4.5° off it; MeshLab's
@@ -676,7 +685,7 @@ RemeshResult remesh_by_component(const TriangleMesh& input, const RemeshSettings
   RemeshSettings settings = given;
   if (given.time_limit > 0)
     settings.time_limit = std::max(given.time_limit - seconds_since(start), 1e-9);
-  std::optional<RemeshResult> sheets = remesh_parts(input, settings, &junction);
+  std::optional<RemeshResult> sheets = remesh_parts(input, settings, &junction, {});
   if (!sheets) return first;
   // Both tries' time counted in the output kept, the other's as topology control's (as a redo
   // not taken is).

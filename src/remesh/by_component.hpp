@@ -3,7 +3,10 @@
 // merged, dropped or cut by its neighbour's cells.
 #pragma once
 
+#include <vector>
+
 #include "cvtmesh/remesh.hpp"
+#include "geometry/triangle_sides.hpp"
 
 namespace cvtmesh {
 
@@ -13,7 +16,9 @@ namespace cvtmesh {
 // requested count is shared in proportion to area, each component getting at least 4 vertices
 // and more than its feature seeds (so a small part with many corners still fits); a sizing
 // given as lengths without a count gives each component the count its lengths ask for. With
-// initial seeds, or a single component, the mesh is remeshed whole.
-RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings);
+// initial seeds, or a single component, the mesh is remeshed whole. `sides`: the mesh's
+// sorted_sides where the caller has them (empty: found here).
+RemeshResult remesh_by_component(const TriangleMesh& mesh, const RemeshSettings& settings,
+                                 std::vector<TriangleSide> sides = {});
 
 }  // namespace cvtmesh
