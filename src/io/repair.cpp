@@ -271,12 +271,12 @@ std::size_t remove_duplicate_triangles(TriangleMesh& mesh) {
   // first. Linear where one sort of all triangles was a tenth of repairing a 270k-triangle scan.
   const std::size_t nt = mesh.triangles.size();
   std::vector<Triangle> key(mesh.triangles);
-  Index ids = 0;
+  std::size_t ids = 0;  // past the largest vertex id
   for (Triangle& k : key) {
     std::sort(k.begin(), k.end());
-    ids = std::max(ids, k[2] + 1);
+    ids = std::max(ids, std::size_t{k[2]} + 1);
   }
-  std::vector<std::size_t> start(static_cast<std::size_t>(ids) + 1, 0);
+  std::vector<std::size_t> start(ids + 1, 0);
   for (const Triangle& k : key) ++start[k[0] + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::vector<std::size_t> order(nt), next(start.begin(), start.end() - 1);
