@@ -89,6 +89,20 @@ TEST(TriangleSides, EdgeUsesAreSortedByEdgeThenCorner) {
   }
 }
 
+TEST(TriangleSides, EdgeUsesKeepOnlyTheEdgesAsked) {
+  const TriangleMesh m = random_soup(kLarge);
+  const auto keep = [](const Edge& e) { return (e[0] + e[1]) % 3 == 0; };
+  std::vector<EdgeUse> expected;
+  for (const EdgeUse& use : edge_uses(m))
+    if (keep(use.edge)) expected.push_back(use);
+  const std::vector<EdgeUse> uses = edge_uses(m, keep);
+  ASSERT_EQ(uses.size(), expected.size());
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    EXPECT_EQ(uses[i].edge, expected[i].edge) << i;
+    EXPECT_EQ(uses[i].corner, expected[i].corner) << i;
+  }
+}
+
 TEST(TriangleSides, TheSidesGivenServeTheOrientationCheck) {
   TriangleMesh m = random_soup(3000);
   // Two triangles that walk their shared edge the same way, apart from the soup's: one must flip.

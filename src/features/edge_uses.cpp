@@ -13,17 +13,21 @@ bool runs_forward(const Triangle& t, Index a, Index b) {
   return false;
 }
 
-std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh) {
+std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh,
+                               const std::function<bool(const Edge&)>& keep) {
   // Sorted by (edge, corner) in linear time (BM_EdgeUses: about 10 times faster than a comparison
   // sort), straight into EdgeUse.
-  return sorted_by_edge<EdgeUse>(
-      mesh.vertices.size(), mesh.triangles,
-      [](Index lo, Index hi, std::size_t t, int k) {
-        return EdgeUse{{lo, hi}, 3 * t + static_cast<std::size_t>(k)};
-      },
-      [](const EdgeUse& x, const EdgeUse& y) {
-        return std::tie(x.edge[1], x.corner) < std::tie(y.edge[1], y.corner);
-      });
+  const auto make = [](Index lo, Index hi, std::size_t t, int k) {
+    return EdgeUse{{lo, hi}, 3 * t + static_cast<std::size_t>(k)};
+  };
+  const auto before = [](const EdgeUse& x, const EdgeUse& y) {
+    return std::tie(x.edge[1], x.corner) < std::tie(y.edge[1], y.corner);
+  };
+  if (!keep) return sorted_by_edge<EdgeUse>(mesh.vertices.size(), mesh.triangles, make, before);
+  return sorted_by_edge<EdgeUse>(mesh.vertices.size(), mesh.triangles, make, before,
+                                 [&](Index lo, Index hi) {
+                                   return keep(Edge{lo, hi});
+                                 });
 }
 
 std::vector<bool> on_edges_not_of_two(const TriangleMesh& mesh) {

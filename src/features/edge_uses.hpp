@@ -3,6 +3,7 @@
 // has no other connectivity).
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -23,8 +24,10 @@ struct EdgeUse {
   std::size_t triangle() const { return corner / 3; }
 };
 
-// Every triangle's three edges, sorted by edge, then corner.
-std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh);
+// Every triangle's three edges, sorted by edge, then corner; with `keep`, only the uses of the
+// edges it accepts (an edge's uses all, or none).
+std::vector<EdgeUse> edge_uses(const TriangleMesh& mesh,
+                               const std::function<bool(const Edge&)>& keep = {});
 
 // Calls visit(i, j) for each edge's run of uses, uses[i] to uses[j - 1] (j - i triangles have
 // it), in order.
