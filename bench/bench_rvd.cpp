@@ -77,6 +77,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -533,19 +534,28 @@ void BM_ExtractionAfterSeedsAdded(benchmark::State& state) {
   const std::vector<Vec3> added = sample_surface(mesh, n / 100, 2);
   after.insert(after.end(), added.begin(), added.end());
   // An extraction of `seeds`, the diagram's build (kd-tree, lists) included; with `memory` if
-  // given. Returns its time and the triangles it replayed.
-  const auto extract = [&](const std::vector<Vec3>& seeds, TraversalMemory* memory) {
+  // given, whose triangulation keeps the chunks that no added seed reaches. Returns its time and
+  // the triangles it did not clip.
+  const auto extract = [&](const std::vector<Vec3>& seeds, ExtractionMemory* memory) {
     const auto start = Clock::now();
-    const RestrictedVoronoiDiagram rvd = memory ? RestrictedVoronoiDiagram(mesh, seeds, *memory)
-                                                : RestrictedVoronoiDiagram(mesh, seeds);
-    MultiNerveBuilder rdt(rvd);
+    const RestrictedVoronoiDiagram rvd =
+        memory ? RestrictedVoronoiDiagram(mesh, seeds, memory->traversal)
+               : RestrictedVoronoiDiagram(mesh, seeds);
+    std::optional<MultiNerveBuilder> fresh;
+    if (memory)
+      memory->nerve.for_diagram(rvd);
+    else
+      fresh.emplace(rvd);
+    MultiNerveBuilder& rdt = memory ? memory->nerve : *fresh;
     PolygonSink* sinks[] = {&rdt};
-    const TraversalStats stats = memory ? rvd.traverse(sinks, *memory) : rvd.traverse(sinks);
+    const TraversalStats stats =
+        memory ? rvd.traverse(sinks, memory->traversal) : rvd.traverse(sinks);
     benchmark::DoNotOptimize(rdt.result().triangles.size());
     return std::pair(seconds(start), stats.triangles_replayed);
   };
+  const Interrupt never;
   for (auto _ : state) {
-    TraversalMemory memory;
+    ExtractionMemory memory(mesh, never);
     extract(before, &memory);
     const double fresh_s = extract(after, nullptr).first;
     const auto [remembered_s, replayed] = extract(after, &memory);
@@ -585,7 +595,7 @@ void BM_PolishCoarseFacets(benchmark::State& state) {
     const SurfaceProjector projector(surface);
     const CvtObjective placement(surface, &projector);
     std::vector<Vec3> polished = seeds;
-    TraversalMemory memory;
+    ExtractionMemory memory(surface, placement.interrupt());
     const auto start = Clock::now();
     extract_polished(surface, polished, placement, {1, 5}, memory);
     const double s = seconds(start);

@@ -122,7 +122,7 @@ TEST(Polish, PolishesAgainOnlyTheDefectsWhoseSeedsChanged) {
   // Random seeds, one round of one step: most defects stay.
   std::vector<Vec3> seeds = sample_surface(sphere, 800, 1);
   const PolishSettings one_step{1, 1};
-  TraversalMemory memory;
+  ExtractionMemory memory(sphere, placement.interrupt());
   ASSERT_EQ(extract_polished(sphere, seeds, placement, one_step, memory).rounds, 1);
   const std::vector<Vec3> polished = seeds;
 
@@ -188,7 +188,7 @@ TEST(Polish, AroundGivenSeedsPolishesOnlyTheDefectsNearThem) {
     return n;
   };
 
-  TraversalMemory memory;
+  ExtractionMemory memory(sphere, placement.interrupt());
   std::vector<Vec3> everywhere = both.seeds;
   ASSERT_EQ(extract_polished(sphere, everywhere, placement, {1, 10}, memory).rounds, 1);
   ASSERT_GT(moved_near(everywhere, first.at), 0u);

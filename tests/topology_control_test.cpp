@@ -162,7 +162,8 @@ TEST(DefectSeeds, SplitCellsGetSeedsNearTheDefectsAtTheirFarthestVertices) {
     seeds.push_back({0.9 * std::cos(k * M_PI / 4), 0.9 * std::sin(k * M_PI / 4), -0.01});
   seeds.insert(seeds.end(), {{1, -0.95, 0}, {1, -0.93, 0}, {1, -0.94, 0.005}});
   const TriangleMesh plate = thin_plate();
-  TraversalMemory memory;
+  const Interrupt never;
+  ExtractionMemory memory(plate, never);
   const std::vector<CellIsland> islands = cell_islands(plate, seeds);
   ASSERT_EQ(islands.size(), 1u);
   ASSERT_EQ(islands[0].seed, 0u);
@@ -730,7 +731,7 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
   const PolishSettings polish{0, 0};
   // The scene is set up unpolished; topology control polishes as remesh does.
   const CurveSpacing spacing(0.25);
-  TraversalMemory traversals;
+  ExtractionMemory traversals(box, placement.interrupt());
   const MendContext context{box,       topology, features, curves,    projector,
                             placement, spacing,  {},       traversals};
   // The surface seed nearest to the middle of a link moves next to it, a quarter of the link's

@@ -3,14 +3,17 @@
 // chunks and order, whether seeds moved, came, went or tie with others.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <tuple>
+#include <utility>
 
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/sampling.hpp"
 #include "geometry/random.hpp"
 #include "support/shapes.hpp"
+#include "voronoi/multi_nerve.hpp"
 
 namespace cvtmesh {
 namespace {
@@ -31,16 +34,20 @@ class CallLog : public PolygonSink {
   }
   const std::vector<std::vector<Call>>& chunks() const { return chunks_; }
 
+ protected:
+  std::vector<Call>& chunk(std::size_t c) { return chunks_[c]; }
+
  private:
   std::vector<std::vector<Call>> chunks_;
 };
 
-// Traverses the diagram of `seeds` with `memory` (its neighbour lists and its polygons) and
-// without; expects the same calls, and returns the traversal's stats with memory.
+// Traverses the diagram of `seeds` with `memory` (its neighbour lists and its polygons) into
+// `remembered` and without into a fresh log; expects the same calls, and returns the traversal's
+// stats with memory.
 TraversalStats expect_same_as_fresh(const TriangleMesh& m, const std::vector<Vec3>& seeds,
-                                    TraversalMemory& memory) {
+                                    TraversalMemory& memory, CallLog& remembered) {
   const RestrictedVoronoiDiagram rvd(m, seeds), remembering(m, seeds, memory);
-  CallLog fresh, remembered;
+  CallLog fresh;
   PolygonSink* fresh_sinks[] = {&fresh};
   PolygonSink* remembered_sinks[] = {&remembered};
   const TraversalStats fresh_stats = rvd.traverse(fresh_sinks);
@@ -49,6 +56,12 @@ TraversalStats expect_same_as_fresh(const TriangleMesh& m, const std::vector<Vec
   EXPECT_EQ(fresh_stats.triangles_replayed, 0u);
   EXPECT_TRUE(fresh.chunks() == remembered.chunks());
   return stats;
+}
+
+TraversalStats expect_same_as_fresh(const TriangleMesh& m, const std::vector<Vec3>& seeds,
+                                    TraversalMemory& memory) {
+  CallLog remembered;
+  return expect_same_as_fresh(m, seeds, memory, remembered);
 }
 
 double spacing_of(const TriangleMesh& m, std::size_t seeds) {
@@ -134,6 +147,114 @@ TEST(TraversalMemory, CrossingsPlacedByInterpolationAreReplayedAsTheyWere) {
   TraversalMemory memory;
   expect_same_as_fresh(square, seeds, memory);
   EXPECT_EQ(expect_same_as_fresh(square, seeds, memory).triangles_replayed, 2u);
+}
+
+// A CallLog that keeps its chunks from one traversal to the next (PolygonSink::keeps_chunks),
+// counting the polygons it is handed.
+class KeepingLog : public CallLog {
+ public:
+  bool keeps_chunks() const override { return true; }
+  void begin_kept(std::size_t chunks, const std::vector<char>& kept) override {
+    std::vector<std::vector<Call>> was = this->chunks();
+    begin(chunks);
+    for (std::size_t c = 0; c < chunks; ++c)
+      if (kept[c]) chunk(c) = std::move(was[c]);
+  }
+  void polygon(std::size_t chunk, const RvdPolygon& p) override {
+    CallLog::polygon(chunk, p);
+    ++handed;
+  }
+  std::atomic<std::size_t> handed = 0;  // chunks come in on several threads
+};
+
+// expect_same_as_fresh into `keeping`: returns how many polygons it was handed, and how many
+// the diagram has.
+std::pair<std::size_t, std::size_t> expect_kept_as_fresh(const TriangleMesh& m,
+                                                         const std::vector<Vec3>& seeds,
+                                                         TraversalMemory& memory,
+                                                         KeepingLog& keeping) {
+  keeping.handed = 0;
+  const std::size_t polygons = expect_same_as_fresh(m, seeds, memory, keeping).polygons;
+  return {keeping.handed, polygons};
+}
+
+TEST(TraversalMemory, SinksThatKeepChunksGetOnlyThoseThatChanged) {
+  const TriangleMesh m = torus(1, 0.4, 120, 48);  // 11,520 triangles: many chunks
+  std::vector<Vec3> seeds = sample_surface(m, 2000, 9);
+  const double spacing = spacing_of(m, seeds.size());
+  CounterRng random(5, 0);
+  const auto jitter = [&] { return spacing * Vec3{random.uniform(), random.uniform(), 0.5}; };
+  TraversalMemory memory;
+  KeepingLog keeping;
+  const auto handed = [&] { return expect_kept_as_fresh(m, seeds, memory, keeping).first; };
+  const auto [first, all] = expect_kept_as_fresh(m, seeds, memory, keeping);
+  EXPECT_EQ(first, all);    // a first traversal hands over everything
+  EXPECT_EQ(handed(), 0u);  // the same seeds: nothing
+  // Seeds nudged, seeds that come in, seeds that go, all near one spot (as polishing and
+  // topology control change them): only the chunks they reach.
+  const Vec3 spot = seeds[0];
+  for (Vec3& p : seeds)
+    if (distance(p, spot) < 2 * spacing) p += 0.3 * jitter();
+  const std::size_t nudged = handed();
+  EXPECT_GT(nudged, 0u);
+  EXPECT_LT(nudged, all / 4);
+  for (int k = 0; k < 5; ++k) seeds.push_back(spot + 0.5 * jitter());
+  EXPECT_LT(handed(), all / 4);
+  seeds.resize(seeds.size() - 3);
+  EXPECT_LT(handed(), all / 4);
+  // A traversal without the memory, or with another, leaves the sink holding chunks of no
+  // record of this memory: the next one with it hands over every polygon.
+  const RestrictedVoronoiDiagram elsewhere(m, seeds);
+  elsewhere.traverse(keeping);
+  seeds[11] += 0.3 * jitter();
+  const auto [after_none, all_now] = expect_kept_as_fresh(m, seeds, memory, keeping);
+  EXPECT_EQ(after_none, all_now);
+  TraversalMemory other;
+  expect_kept_as_fresh(m, seeds, other, keeping);
+  seeds[12] += 0.3 * jitter();
+  const auto [after_other, polygons] = expect_kept_as_fresh(m, seeds, memory, keeping);
+  EXPECT_EQ(after_other, polygons);
+  // A sink that did not serve the memory's last traversal gets every polygon too.
+  KeepingLog newcomer;
+  seeds[13] += 0.3 * jitter();
+  const auto [new_handed, new_polygons] = expect_kept_as_fresh(m, seeds, memory, newcomer);
+  EXPECT_EQ(new_handed, new_polygons);
+}
+
+TEST(TraversalMemory, AKeptMultiNerveIsTheFreshOne) {
+  // Two sheets closer than the spacing: cells in several pieces, which the multi-nerve gives one
+  // vertex each, come and go as seeds change.
+  const TriangleMesh sheets = concatenate(icosphere(4), icosphere(4, 1.03));
+  std::vector<Vec3> seeds = sample_surface(sheets, 600, 3);
+  const double spacing = spacing_of(sheets, seeds.size());
+  CounterRng random(2, 0);
+  const auto jitter = [&] { return spacing * Vec3{random.uniform(), random.uniform(), 0.5}; };
+  TraversalMemory memory;
+  MultiNerveBuilder kept(CellPieceCollector::Keeping{}, sheets, nullptr);
+  std::size_t far_pieces = 0;
+  const auto expect_fresh = [&] {
+    const RestrictedVoronoiDiagram rvd(sheets, seeds), remembering(sheets, seeds, memory);
+    MultiNerveBuilder fresh(rvd);
+    rvd.traverse(fresh);
+    kept.for_diagram(remembering);
+    PolygonSink* sinks[] = {&kept};
+    remembering.traverse(sinks, memory);
+    EXPECT_EQ(kept.result().vertices, fresh.result().vertices);
+    EXPECT_EQ(kept.result().triangles, fresh.result().triangles);
+    EXPECT_EQ(kept.vertex_seed(), fresh.vertex_seed());
+    EXPECT_EQ(kept.pieces().pieces().size(), fresh.pieces().pieces().size());
+    far_pieces += fresh.result().vertices.size() - seeds.size();
+  };
+  expect_fresh();
+  expect_fresh();
+  for (std::size_t s = 0; s < seeds.size(); s += 50) seeds[s] += 0.3 * jitter();
+  expect_fresh();
+  const std::vector<Vec3> more = sample_surface(sheets, 15, 5);
+  seeds.insert(seeds.end(), more.begin(), more.end());
+  expect_fresh();
+  seeds.resize(seeds.size() - 25);
+  expect_fresh();
+  EXPECT_GT(far_pieces, 0u) << "no cell in several pieces: the test tests too little";
 }
 
 TEST(TraversalMemory, AnotherSurfaceStartsAfresh) {

@@ -53,6 +53,26 @@ class PolygonSink {
   // remeshes 5% slower on two cores.
   virtual void chunk_done(std::size_t /*chunk*/) {}
   virtual void end() {}
+
+  // Keeping chunks (issue 18: topology control and polishing work locally). A sink that serves
+  // one traversal after another with the same TraversalMemory, where a few seeds change between
+  // them, can keep what it holds of the chunks whose polygons have not changed, instead of
+  // having those polygons handed over again. Such a sink returns true here. A traversal with a
+  // memory whose last traversal this sink served then calls begin_kept in place of begin: chunk c
+  // is as the sink last had it where kept[c] is nonzero, and gets no polygons and no chunk_done.
+  // Otherwise (a first traversal, another memory, no memory) the sink gets begin and every
+  // polygon, as any sink.
+  virtual bool keeps_chunks() const { return false; }
+  virtual void begin_kept(std::size_t chunks, const std::vector<char>& /*kept*/) { begin(chunks); }
+
+ protected:
+  // For a sink whose chunks no longer stand for its polygons (it changed what it makes of them):
+  // the next traversal hands it every polygon.
+  void forget_kept_chunks() { served_ = 0; }
+
+ private:
+  friend class RestrictedVoronoiDiagram;
+  std::uint64_t served_ = 0;  // the version of the memory's record this sink last served
 };
 
 struct TraversalStats {

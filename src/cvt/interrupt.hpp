@@ -40,6 +40,9 @@ class InterruptSink : public PolygonSink {
   explicit InterruptSink(const Interrupt& interrupt) : interrupt_(interrupt) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon&) override;
+  // It holds nothing of a chunk: a chunk kept needs no check (a sink kept from one traversal to
+  // the next, as ExtractionMemory's, is handed only the polygons that changed).
+  bool keeps_chunks() const override { return true; }
 
  private:
   const Interrupt& interrupt_;

@@ -24,56 +24,6 @@ constexpr double kMinQuality = 0.65;
 // How far from PolishSettings::around a defect is still polished, in rings of triangles.
 constexpr int kAroundRings = 4;
 
-// The input triangles each cell covers, as (seed, triangle) pairs; and the ball around each
-// polygon on a triangle that `pieces` cuts.
-class CellCoverage : public PolygonSink {
- public:
-  explicit CellCoverage(const TrianglePieces& pieces) : pieces_(pieces) {}
-  void begin(std::size_t chunks) override {
-    chunks_.assign(chunks, {});
-    ball_chunks_.assign(chunks, {});
-  }
-  void polygon(std::size_t chunk, const RvdPolygon& p) override {
-    chunks_[chunk].push_back({p.seed, p.triangle});
-    if (!pieces_.cut(p.triangle)) return;
-    ball_chunks_[chunk].push_back({p.triangle, p.seed, bounding_ball(p.vertices)});
-  }
-  // Each chunk is kept as it is, sized exactly: joined into one array, they were held twice.
-  void chunk_done(std::size_t chunk) override {
-    chunks_[chunk].shrink_to_fit();
-    ball_chunks_[chunk].shrink_to_fit();
-  }
-  // The triangles covered by any of `cells` (sorted), sorted and without repeats. One scan, only
-  // in rounds that found defects: most extractions never ask.
-  std::vector<Index> triangles_of(const std::vector<Index>& cells) const {
-    std::vector<Index> out;
-    for (const auto& chunk : chunks_)
-      for (const auto& [seed, triangle] : chunk)
-        if (std::binary_search(cells.begin(), cells.end(), seed)) out.push_back(triangle);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
-  }
-  // Per cut triangle of `cells` (sorted), the balls around their polygons there.
-  std::map<Index, std::vector<Ball>> balls_of(const std::vector<Index>& cells) const {
-    std::map<Index, std::vector<Ball>> out;
-    for (const auto& chunk : ball_chunks_)
-      for (const BallOn& b : chunk)
-        if (std::binary_search(cells.begin(), cells.end(), b.seed))
-          out[b.triangle].push_back(b.ball);
-    return out;
-  }
-
- private:
-  struct BallOn {
-    Index triangle, seed;
-    Ball ball;
-  };
-  const TrianglePieces& pieces_;
-  std::vector<std::vector<std::pair<Index, Index>>> chunks_;
-  std::vector<std::vector<BallOn>> ball_chunks_;
-};
-
 // Whether the triangle has a defective shape.
 bool defective(const TriangleMesh& mesh, const Triangle& t) {
   const MinShape shape = min_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]);
@@ -261,11 +211,8 @@ void local_lloyd(const TriangleMesh& patch, const std::vector<double>& density,
 
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings,
-                                TraversalMemory& memory, const std::vector<Vec3>* polished,
-                                const SideRings* rings) {
+                                ExtractionMemory& memory, const std::vector<Vec3>* polished) {
   PolishedOutput out;
-  std::optional<SideRings> own_rings;  // one for all the rounds, where the caller keeps none
-  if (!rings) rings = &own_rings.emplace(surface);
   // Lloyd steps left these defects as they are; more of them move them little. (man.off at 5k:
   // each of topology control's 5 rounds polished the same 15-20 defects again, 10 steps a round,
   // a third of the run; 5.9 s → 4.7 s. On the corpus the outputs are as good on average.)
@@ -283,12 +230,17 @@ PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& 
   std::vector<Index> moving;
   const TrianglePieces pieces(surface, edge_length_for(surface_area(surface), seeds.size()));
   for (int round = 0;; ++round) {
-    const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
-    MultiNerveBuilder rdt(rvd, rings);
-    CellCoverage coverage(pieces);
-    InterruptSink stop(objective.interrupt());
-    PolygonSink* sinks[] = {&rdt, &coverage, &stop};
-    rvd.traverse(sinks, memory);
+    const RestrictedVoronoiDiagram rvd(surface, seeds, memory.traversal);
+    MultiNerveBuilder& rdt = memory.nerve;
+    rdt.for_diagram(rvd);
+    CellCoverage& coverage = memory.coverage;
+    coverage.for_pieces(pieces);
+    std::vector<PolygonSink*> sinks{&rdt, &coverage, &memory.stop};
+    if (memory.piece_shapes) {  // kept up for topology control
+      memory.piece_shapes->for_diagram(rvd);
+      sinks.push_back(&*memory.piece_shapes);
+    }
+    rvd.traverse(sinks, memory.traversal);
     out.mesh = rdt.result();
     out.vertex_seed = rdt.vertex_seed();
     // Polishing moves seeds: it looks at the triangles between seeds only, not at those of the

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cvt/cvt_objective.hpp"
-#include "voronoi/side_rings.hpp"
+#include "cvt/extraction_memory.hpp"
 
 namespace cvtmesh {
 
@@ -46,15 +46,14 @@ inline bool polished_at_once(const CvtObjective& objective) {
 // rounds are left and the last round did not already move every seed around them, moves the surface
 // seeds around them by local Lloyd steps and triangulates again. Moved seeds stay on the
 // surface (objective.constrained); feature seeds do not move. The result does not depend on
-// the thread count. Each triangulation replays from `memory` what the last traversal of
-// `surface` there left unchanged, and leaves its own for the next. `polished`, if given, holds the
-// seeds of an output polished before: a defect whose three seeds are all there as they were then
-// was polished then, and is not polished again (topology control's rounds change a few seeds).
-// `rings`: the surface's SideRings, where the caller keeps them (else found here).
+// the thread count. Each triangulation clips, and collects, only where the last one over
+// `surface` with `memory` changed (ExtractionMemory), and leaves its own for the next.
+// `polished`, if given, holds the seeds of an output polished before: a defect whose three seeds
+// are all there as they were then was polished then, and is not polished again (topology
+// control's rounds change a few seeds).
 PolishedOutput extract_polished(const TriangleMesh& surface, std::vector<Vec3>& seeds,
                                 const CvtObjective& objective, const PolishSettings& settings,
-                                TraversalMemory& memory,
-                                const std::vector<Vec3>* polished = nullptr,
-                                const SideRings* rings = nullptr);
+                                ExtractionMemory& memory,
+                                const std::vector<Vec3>* polished = nullptr);
 
 }  // namespace cvtmesh

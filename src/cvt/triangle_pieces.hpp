@@ -21,6 +21,8 @@ class TrianglePieces {
   TrianglePieces(const TriangleMesh& surface, double spacing);
 
   bool cut(Index t) const { return cut_[t] != 0; }
+  // Per triangle, whether it is cut.
+  const std::vector<char>& cuts() const { return cut_; }
 
   // Appends to `patch` the pieces of triangle t that meet one of `balls` (around the polygons of
   // the cells that the pieces are for: bounding_ball), in t's orientation,

@@ -256,7 +256,7 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
                                          : SplitCells::near_triangles;
     found = defect_seeds(m.surface, seeds, dual,
                          m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing,
-                         m.traversals, m.rings);
+                         m.extraction);
   }
   if (!a.missing.empty() && !out_of_time) {
     const std::size_t mended =
@@ -326,8 +326,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       PolishSettings around_defects = polish;
       around_defects.around =
           failing_seeds(output.mesh, a.defects, output.vertex_seed, seeds.size());
-      output = extract_polished(m.surface, seeds, m.placement, around_defects, m.traversals,
-                                nullptr, m.rings);
+      output = extract_polished(m.surface, seeds, m.placement, around_defects, m.extraction);
       report.polish_rounds += output.rounds;
       a = assess(m, special, output.mesh, seeds, constraints);
     }
@@ -361,8 +360,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
       continue;
     }
     ++report.rounds;
-    output =
-        extract_polished(m.surface, seeds, m.placement, polish, m.traversals, &polished, m.rings);
+    output = extract_polished(m.surface, seeds, m.placement, polish, m.extraction, &polished);
     report.polish_rounds += output.rounds;
   }
   Round best = std::move(kept).take();

@@ -10,7 +10,6 @@
 #include "cvt/polish_defects.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
-#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 
@@ -23,12 +22,11 @@ struct MendContext {
   const CvtObjective& placement;  // where seeds may go (see extract_polished)
   const CurveSpacing& spacing;    // target edge lengths along the curves
   PolishSettings polish;
-  TraversalMemory& traversals;  // the last traversal of `surface` (see extract_polished)
+  ExtractionMemory& extraction;  // what the last extraction of `surface` left (extract_polished)
   // Told of each round that adds seeds (RemeshSettings::progress; null: nobody), with the time
   // since `start`.
   const std::function<void(const RemeshProgress&)>* progress = nullptr;
   std::chrono::steady_clock::time_point start{};
-  const SideRings* rings = nullptr;  // the surface's, if kept (else each traversal finds them)
 };
 
 struct MendReport {

@@ -18,40 +18,6 @@ Triangle rotated_to_smallest(Triangle t) {
   return t;
 }
 
-// The crossing points of the listed triangles' dual Voronoi edges (their RVD vertices of type
-// C), each with its ball radius.
-class CrossingCollector : public PolygonSink {
- public:
-  CrossingCollector(const std::vector<Vec3>& seeds, const std::vector<Triangle>& wanted)
-      : seeds_(seeds), wanted_(wanted) {
-    for (Triangle& t : wanted_) t = rotated_to_smallest(t);
-    std::sort(wanted_.begin(), wanted_.end());
-  }
-  struct Crossing {
-    Vec3 point;
-    double radius;
-  };
-  void begin(std::size_t chunks) override { chunks_.assign(chunks, {}); }
-  void polygon(std::size_t chunk, const RvdPolygon& poly) override {
-    for (std::size_t k = 0; k < poly.vertices.size(); ++k) {
-      const auto t = dual_triangle(poly, k);
-      if (!t || !std::binary_search(wanted_.begin(), wanted_.end(), *t)) continue;
-      const Vec3& p = poly.vertices[k].point;
-      chunks_[chunk].push_back({p, distance(p, seeds_[poly.seed])});
-    }
-  }
-  std::vector<Crossing> result() const {
-    std::vector<Crossing> all;
-    for (const auto& c : chunks_) all.insert(all.end(), c.begin(), c.end());
-    return all;
-  }
-
- private:
-  const std::vector<Vec3>& seeds_;
-  std::vector<Triangle> wanted_;
-  std::vector<std::vector<Crossing>> chunks_;
-};
-
 // Where split cells may cause the defects of `triangles` (in seed ids): the balls around each
 // triangle's centroid whose radius is kIslandReach times its longest edge. A thin part's cells,
 // split around it, cause defects a few cells along it (camel.off at 2k: its tail's, 0.06 from a
@@ -98,20 +64,30 @@ OutputDefects find_output_defects(const TriangleMesh& rdt, const std::vector<boo
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
                          SplitCells split_cells, const SurfaceProjector* crossings,
-                         TraversalMemory& memory, const SideRings* rings) {
+                         ExtractionMemory& memory) {
   const bool exhaustive = split_cells == SplitCells::at_centroids_everywhere;
   const bool everywhere = split_cells != SplitCells::near_triangles;
-  const RestrictedVoronoiDiagram rvd(surface, seeds, memory);
-  CellPieceCollector pieces(surface, rings);
-  CrossingCollector collector(seeds, triangles);
-  PieceEulerCollector euler(surface, seeds);
-  std::vector<PolygonSink*> sinks{&pieces, &collector};
-  if (check_discs || !exhaustive) sinks.push_back(&euler);  // the pieces' farthest vertices
-  rvd.traverse(sinks, memory);
+  // The cells' pieces and where the Voronoi edges cross the surface are the triangulation's: for
+  // the seeds that the last extraction triangulated, as here, the traversal clips nothing and
+  // hands the triangulation nothing. Only the pieces' shapes, the first time they are wanted,
+  // take every polygon again.
+  const RestrictedVoronoiDiagram rvd(surface, seeds, memory.traversal);
+  memory.nerve.for_diagram(rvd);
+  std::vector<PolygonSink*> sinks{&memory.nerve, &memory.stop};
+  // The pieces' shapes (Euler characteristics, farthest vertices), where wanted; once made, kept
+  // up by every traversal.
+  const bool shaped = check_discs || !exhaustive;
+  if (shaped) memory.shapes_of(surface);
+  if (memory.piece_shapes) {
+    memory.piece_shapes->for_diagram(rvd);
+    sinks.push_back(&*memory.piece_shapes);
+  }
+  rvd.traverse(sinks, memory.traversal);
+  const CellPieceCollector& pieces = memory.nerve.pieces();
   DefectSeeds out;
   const DefectBalls at_defects(seeds, triangles);
   const std::vector<PieceShape> shapes =
-      check_discs || !exhaustive ? euler.shapes(pieces) : std::vector<PieceShape>{};
+      shaped ? memory.piece_shapes->shapes(pieces) : std::vector<PieceShape>{};
   // A piece that reaches a crossing of the input's sheets is left alone, as no seed splits it
   // off: the sheets cross within the piece's reach from its seed.
   const auto at_crossing = [&](const Vec3& p, Index seed) {
@@ -128,9 +104,12 @@ DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& s
         out.islands.push_back(shapes[i].farthest);
     }
   }
+  std::vector<Triangle> wanted = triangles;
+  for (Triangle& t : wanted) t = rotated_to_smallest(t);
+  std::sort(wanted.begin(), wanted.end());
   std::vector<Vec3>& kept = out.refinement;
   std::vector<double> radius;
-  for (const auto& c : collector.result()) {
+  for (const auto& c : memory.nerve.crossings(wanted)) {
     // A crossing at a seed (radius 0) would duplicate it; one near a point kept already adds
     // nothing the other does not.
     if (!(c.radius > 0)) continue;

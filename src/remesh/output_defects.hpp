@@ -9,9 +9,9 @@
 
 #include <vector>
 
+#include "cvt/extraction_memory.hpp"
 #include "cvtmesh/mesh.hpp"
 #include "cvtmesh/rvd.hpp"
-#include "voronoi/side_rings.hpp"
 
 namespace cvtmesh {
 class SurfaceProjector;
@@ -67,12 +67,12 @@ struct DefectSeeds {
 //   handles far finer than the spacing (femur.off at 1k) that the farthest vertices leave.
 // No piece gets a seed where it reaches `crossings` (the input's triangles that cross another;
 // null: none) within its reach from its seed.
-// `memory` holds the last traversal of `surface` (see TraversalMemory), and gets this one.
-// `rings`: the surface's SideRings, where the caller keeps them (else found here).
+// `memory` holds what the last extraction of `surface` left (ExtractionMemory), and gets this
+// traversal.
 enum class SplitCells { near_triangles, farthest_everywhere, at_centroids_everywhere };
 DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& seeds,
                          const std::vector<Triangle>& triangles, bool check_discs,
                          SplitCells split_cells, const SurfaceProjector* crossings,
-                         TraversalMemory& memory, const SideRings* rings = nullptr);
+                         ExtractionMemory& memory);
 
 }  // namespace cvtmesh

@@ -290,13 +290,13 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   const std::size_t optimized_seeds = seeds.size();  // the rounds append theirs
   std::vector<CellNormal> cells;                     // of the seeds as extracted, for the fit
   {
-    // Polishing and topology control change few seeds between triangulations: each replays the
-    // triangles that the last one left unchanged (issue 18: topology control works locally).
+    // Polishing and topology control change few seeds between triangulations: each clips, and
+    // collects, only where the last one changed (issue 18: topology control works locally).
     // Freed before the finishing steps.
-    TraversalMemory traversals;
-    PolishedOutput output = extract_polished(
-        mesh, seeds, placement, {polished_at_once(placement) ? settings.polish_rounds : 0},
-        traversals, nullptr, &*rings);
+    ExtractionMemory extraction(mesh, *rings, interrupt);
+    PolishedOutput output =
+        extract_polished(mesh, seeds, placement,
+                         {polished_at_once(placement) ? settings.polish_rounds : 0}, extraction);
     result.polish_rounds = output.rounds;
     result.defects_polished = output.defects;
     // Topology control (paper §4.4): curves cut by a third cell, cells in several pieces.
@@ -304,14 +304,14 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                               features,       *curves,
                               *projector,     placement,
                               *curve_spacing, {settings.polish_rounds},
-                              traversals,     &settings.progress,
-                              start,          &*rings};
+                              extraction,     &settings.progress,
+                              start};
     const auto mend_start = Clock::now();
     output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
                            mends);
     result.seconds_topology = seconds_since(mend_start);
     result.mesh = std::move(output.mesh);
-    if (settings.fit_rounds > 0) cells = cell_normals(mesh, seeds, traversals);
+    if (settings.fit_rounds > 0) cells = cell_normals(mesh, seeds, extraction.traversal);
   }
   result.polish_rounds += mends.polish_rounds;
   result.links_mended = mends.links_mended;

@@ -13,6 +13,7 @@
 
 #include "geometry/index_range.hpp"
 #include "geometry/union_find.hpp"
+#include "voronoi/kept_chunks.hpp"
 
 namespace cvtmesh {
 
@@ -48,6 +49,13 @@ void CellPieceCollector::begin(std::size_t chunks) {
   // side's next around its edge leads to them (SideRings), found before any polygon is kept.
   if (!rings_) own_rings_.emplace(surface_);
   polygon_chunks_.assign(chunks, {});
+  all_kept_ = false;
+}
+
+void CellPieceCollector::begin_kept(std::size_t /*chunks*/, const std::vector<char>& kept) {
+  all_kept_ = std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
+  if (!rings_ && !all_kept_) own_rings_.emplace(surface_);
+  keep_only(kept, polygon_chunks_);
 }
 
 void CellPieceCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
@@ -71,6 +79,7 @@ void CellPieceCollector::chunk_done(std::size_t chunk) {
 }
 
 void CellPieceCollector::end() {
+  if (all_kept_) return;  // the same polygons as when the pieces were found
   // The polygons stay in their chunks, numbered in chunk order through an array of pointers:
   // joining them into one array held every polygon twice at the peak (issue 22: extraction was
   // 264 MB of a 490 MB run on a 500k-triangle torus).
@@ -168,7 +177,7 @@ void CellPieceCollector::end() {
     }
   });
   polygons = {};
-  polygon_chunks_.clear();
+  if (!keeping_) polygon_chunks_.clear();
 }
 
 const CellPieceCollector::PieceOf* CellPieceCollector::entry(Index seed, Index triangle) const {

@@ -40,10 +40,17 @@ class CellPieceCollector : public PolygonSink {
   // each traversal finds its own.
   explicit CellPieceCollector(const TriangleMesh& surface, const SideRings* rings = nullptr)
       : surface_(surface), rings_(rings) {}
+  // A collector that keeps its chunks from one traversal to the next with the same memory
+  // (PolygonSink::keeps_chunks), and so holds their polygons between traversals.
+  struct Keeping {};
+  CellPieceCollector(Keeping, const TriangleMesh& surface, const SideRings* rings)
+      : surface_(surface), rings_(rings), keeping_(true) {}
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
   void chunk_done(std::size_t chunk) override;
   void end() override;
+  bool keeps_chunks() const override { return keeping_; }
+  void begin_kept(std::size_t chunks, const std::vector<char>& kept) override;
 
   // By seed, then area (largest first), then first polygon.
   const std::vector<CellPiece>& pieces() const { return pieces_; }
@@ -62,6 +69,8 @@ class CellPieceCollector : public PolygonSink {
   };
   const TriangleMesh& surface_;
   const SideRings* rings_;
+  bool keeping_ = false;
+  bool all_kept_ = false;  // this traversal kept every chunk: the pieces are as they were
   std::optional<SideRings> own_rings_;  // where none were given: from begin() to end()
   std::vector<std::vector<Polygon>> polygon_chunks_;
   std::vector<CellPiece> pieces_;

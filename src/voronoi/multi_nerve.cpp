@@ -1,23 +1,33 @@
 #include "voronoi/multi_nerve.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 #include "cvtmesh/repair.hpp"
 #include "voronoi/dual_triangle.hpp"
+#include "voronoi/kept_chunks.hpp"
 
 namespace cvtmesh {
 
 void MultiNerveBuilder::begin(std::size_t chunks) {
   pieces_.begin(chunks);
+  all_kept_ = false;
   chunks_.assign(chunks, {});
   at_seed_.assign(chunks, {});
 }
 
+void MultiNerveBuilder::begin_kept(std::size_t chunks, const std::vector<char>& kept) {
+  pieces_.begin_kept(chunks, kept);
+  all_kept_ = std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
+  keep_only(kept, chunks_, at_seed_);
+}
+
 void MultiNerveBuilder::polygon(std::size_t chunk, const RvdPolygon& poly) {
   pieces_.polygon(chunk, poly);
-  const Vec3& seed = rvd_.seeds()[poly.seed];
+  const Vec3& seed = rvd_->seeds()[poly.seed];
   for (std::size_t k = 0; k < poly.vertices.size(); ++k) {
-    if (const auto t = dual_triangle(poly, k)) chunks_[chunk].push_back({*t, poly.triangle});
+    if (const auto t = dual_triangle(poly, k))
+      chunks_[chunk].push_back({*t, poly.triangle, poly.vertices[k].point});
     const RvdVertex& v = poly.vertices[k];
     if (v.symbols[0] < 0 && v.symbols[1] < 0 && v.point == seed)  // an input corner
       at_seed_[chunk].push_back({poly.seed, poly.triangle});
@@ -31,7 +41,11 @@ void MultiNerveBuilder::chunk_done(std::size_t chunk) {
 
 void MultiNerveBuilder::end() {
   pieces_.end();
-  const std::vector<Vec3>& seeds = rvd_.seeds();
+  const std::vector<Vec3>& seeds = rvd_->seeds();
+  // The same polygons of the same seeds: the triangulation is as it was (topology control's
+  // search for where to add seeds traverses the seeds its extraction just did).
+  if (all_kept_ && seeds == seeds_at_end_) return;
+  if (keeps_chunks()) seeds_at_end_ = seeds;
   const std::vector<CellPiece>& pieces = pieces_.pieces();
   result_ = {};
   result_.vertices = seeds;
@@ -42,7 +56,7 @@ void MultiNerveBuilder::end() {
   std::vector<bool> reach_seed(pieces.size(), false);
   for (const auto& found : at_seed_)
     for (const auto& [seed, triangle] : found) reach_seed[pieces_.piece_at(seed, triangle)] = true;
-  at_seed_.clear();
+  if (!keeps_chunks()) at_seed_.clear();
   // Each piece's vertex: its seed for the cell's first (largest) piece, a new one otherwise, at
   // the seed too if both pieces reach it (sheets touching at the seed, which still touch there).
   std::vector<Index> vertex(pieces.size());
@@ -65,10 +79,21 @@ void MultiNerveBuilder::end() {
       for (int k = 0; k < 3; ++k) t[k] = vertex[pieces_.piece_at(f.seeds[k], f.triangle)];
       result_.triangles.push_back(t);
     }
-  chunks_.clear();
+  if (!keeps_chunks()) chunks_.clear();
   // A Voronoi edge crossing the surface several times within one piece of each of its three
   // cells gives the same triangle several times.
   remove_duplicate_triangles(result_);
+}
+
+std::vector<MultiNerveBuilder::Crossing> MultiNerveBuilder::crossings(
+    const std::vector<Triangle>& wanted) const {
+  std::vector<Crossing> out;
+  const std::vector<Vec3>& seeds = rvd_->seeds();
+  for (const auto& found : chunks_)
+    for (const Found& f : found)
+      if (std::binary_search(wanted.begin(), wanted.end(), f.seeds))
+        out.push_back({f.point, distance(f.point, seeds[f.seeds[0]])});
+  return out;
 }
 
 }  // namespace cvtmesh

@@ -7,6 +7,8 @@
 #include <numeric>
 #include <utility>
 
+#include "voronoi/kept_chunks.hpp"
+
 namespace cvtmesh {
 
 namespace {
@@ -27,6 +29,10 @@ void PieceEulerCollector::begin(std::size_t chunks) {
   shared_.assign(chunks, {});
 }
 
+void PieceEulerCollector::begin_kept(std::size_t /*chunks*/, const std::vector<char>& kept) {
+  keep_only(kept, own_, shared_);
+}
+
 void PieceEulerCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
   const auto& v = p.vertices;
   const Triangle& t = surface_.triangles[p.triangle];
@@ -36,7 +42,7 @@ void PieceEulerCollector::polygon(std::size_t chunk, const RvdPolygon& p) {
   };
   for (std::size_t k = 0; k < v.size(); ++k) {
     const RvdVertex& a = v[k];
-    const double d = distance(a.point, seeds_[p.seed]);
+    const double d = distance(a.point, (*seeds_)[p.seed]);
     if (d > own.distance) {
       own.distance = d;
       own.farthest = a.point;

@@ -23,9 +23,17 @@ struct PieceShape {
 class PieceEulerCollector : public PolygonSink {
  public:
   PieceEulerCollector(const TriangleMesh& surface, const std::vector<Vec3>& seeds)
-      : surface_(surface), seeds_(seeds) {}
+      : surface_(surface), seeds_(&seeds) {}
+  // A collector that keeps its chunks from one traversal of `surface` to the next with the same
+  // memory (PolygonSink::keeps_chunks), for topology control's rounds (ExtractionMemory): each
+  // traversal's diagram is set first (for_diagram).
+  struct Keeping {};
+  PieceEulerCollector(Keeping, const TriangleMesh& surface) : surface_(surface), keeping_(true) {}
+  void for_diagram(const RestrictedVoronoiDiagram& rvd) { seeds_ = &rvd.seeds(); }
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
+  bool keeps_chunks() const override { return keeping_; }
+  void begin_kept(std::size_t chunks, const std::vector<char>& kept) override;
 
   // After the traversal, for each piece of `pieces` (collected in the same traversal), in its
   // order. Independent of the thread count.
@@ -47,7 +55,8 @@ class PieceEulerCollector : public PolygonSink {
   // kind, then input vertex or edge ids and a seed.
   using Key = std::array<std::int64_t, 3>;
   const TriangleMesh& surface_;
-  const std::vector<Vec3>& seeds_;
+  const std::vector<Vec3>* seeds_ = nullptr;
+  bool keeping_ = false;
   std::vector<std::vector<Own>> own_;
   std::vector<std::vector<Key>> shared_;
 };

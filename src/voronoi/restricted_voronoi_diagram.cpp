@@ -8,6 +8,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <deque>
@@ -91,6 +92,13 @@ struct Scratch {
   std::size_t radius_searches = 0;
 };
 
+// A version for a new traversal record (TraversalMemory::State::version): never 0, never one
+// given before, in this process.
+std::uint64_t next_record_version() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
 }  // namespace
 
 struct RestrictedVoronoiDiagram::Impl {
@@ -116,8 +124,10 @@ struct RestrictedVoronoiDiagram::Impl {
 
   // Every triangle's polygons to the sinks: clipped, or, where `old` holds them still, replayed;
   // and to `recorder`, if given, which takes over the chunks of `old` that stay as they were.
+  // `version`: where `old` is a memory's record, its version (see TraversalMemory::State), set
+  // to the new record's; the sinks that keep chunks and served `old` get none of those chunks.
   TraversalStats traverse(std::span<PolygonSink* const> sinks, TraversalRecord* old,
-                          PolygonRecorder* recorder) const;
+                          PolygonRecorder* recorder, std::uint64_t* version = nullptr) const;
 
   // Clips `polygon` (in the frame's cell) by the bisector with seed j. Returns whether the
   // bisector cut it, i.e. some vertex lies on j's side.
@@ -435,17 +445,20 @@ TraversalStats RestrictedVoronoiDiagram::traverse(std::span<PolygonSink* const> 
   if (!memory.state_) memory.state_ = std::make_unique<TraversalMemory::State>();
   // Taken out: a traversal that does not run to its end leaves the memory without a record.
   TraversalRecord old = std::exchange(memory.state_->record, {});
+  std::uint64_t version = std::exchange(memory.state_->version, 0);
   PolygonRecorder recorder(surface, impl_->seeds,
                            triangles_per_chunk(surface.triangles.size(), impl_->seeds.size()));
   const TraversalStats stats =
-      impl_->traverse(sinks, old.covers(surface) ? &old : nullptr, &recorder);
+      impl_->traverse(sinks, old.covers(surface) ? &old : nullptr, &recorder, &version);
   memory.state_->record = std::move(recorder).take();
+  memory.state_->version = version;
   return stats;
 }
 
 TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* const> sinks,
                                                         TraversalRecord* old,
-                                                        PolygonRecorder* recorder) const {
+                                                        PolygonRecorder* recorder,
+                                                        std::uint64_t* version) const {
   const std::size_t triangles = surface->triangles.size();
   const std::size_t chunk_size = triangles_per_chunk(triangles, seeds.size());
   const std::size_t chunks = (triangles + chunk_size - 1) / chunk_size;
@@ -456,9 +469,32 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
   // goes to the recorder whole, the others are freed once done (the others' polygons go to the
   // recorder one by one), so that the two records are not held whole at once.
   const bool adoptable = old && recorder && old->chunk_size() == chunk_size;
+  std::vector<char> kept(chunks, 0);
+  if (adoptable)
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+      const auto begin = stale.begin() + static_cast<std::ptrdiff_t>(c * chunk_size);
+      const auto end =
+          stale.begin() + static_cast<std::ptrdiff_t>(std::min(triangles, (c + 1) * chunk_size));
+      kept[c] = std::none_of(begin, end, [](char x) { return x != 0; });
+    });
+  // The sinks that keep their chunks from `old` (PolygonSink::keeps_chunks); the others get
+  // those chunks' polygons replayed. A traversal that changes no chunk keeps the version.
+  const bool same =
+      adoptable && std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
+  const std::uint64_t served = version ? *version : 0;
+  if (version && !same) *version = next_record_version();
+  std::vector<PolygonSink*> replayed;
+  for (PolygonSink* sink : sinks) {
+    if (adoptable && served != 0 && sink->keeps_chunks() && sink->served_ == served)
+      sink->begin_kept(chunks, kept);
+    else {
+      sink->begin(chunks);
+      replayed.push_back(sink);
+    }
+  }
   std::vector<PolygonSink*> recorded(sinks.begin(), sinks.end());
   if (recorder) recorded.push_back(recorder);
-  for (PolygonSink* sink : recorded) sink->begin(chunks);
+  if (recorder) recorder->begin(chunks);
   tbb::enumerable_thread_specific<Scratch> scratch([&] {
     Scratch s;
     s.stamp.assign(seeds.size(), 0);
@@ -491,25 +527,30 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
     Scratch& s = scratch.local();
     s.searched.clear();  // a chunk's triangles are near one another, the searches they share too
     const std::size_t begin = chunk * chunk_size, end = std::min(triangles, begin + chunk_size);
-    const bool kept = adoptable && std::none_of(stale.begin() + static_cast<std::ptrdiff_t>(begin),
-                                                stale.begin() + static_cast<std::ptrdiff_t>(end),
-                                                [](char c) { return c != 0; });
+    const bool whole = kept[chunk] != 0;
     for (std::size_t t = begin; t < end; ++t) {
       if (!clipped(t)) {
-        s.polygons += old->replay(t, chunk, kept ? sinks : recorded, s.clipped);
+        // A chunk kept whole goes only to the sinks that do not keep it.
+        s.polygons += whole && replayed.empty()
+                          ? old->polygon_count(t)
+                          : old->replay(t, chunk, whole ? replayed : recorded, s.clipped);
         ++s.replayed;
       } else if (!flat(t)) {
         clip_triangle(t, chunk, recorded, owners, s);
       }
     }
-    if (kept)
+    if (whole)
       recorder->adopt(chunk, *old);
     else if (recorder)
       recorder->finish(chunk);
-    if (adoptable && !kept) old->release(chunk);
-    for (PolygonSink* sink : sinks) sink->chunk_done(chunk);
+    if (adoptable && !whole) old->release(chunk);
+    for (PolygonSink* sink : whole ? std::span<PolygonSink* const>(replayed) : sinks)
+      sink->chunk_done(chunk);
   });
   for (PolygonSink* sink : recorded) sink->end();
+  // Without a memory, what a sink now holds is of no record.
+  for (PolygonSink* sink : sinks)
+    if (sink->keeps_chunks()) sink->served_ = version ? *version : 0;
   TraversalStats stats;
   for (const Scratch& s : scratch) {
     stats.polygons += s.polygons;

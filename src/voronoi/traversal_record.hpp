@@ -31,6 +31,11 @@ class TraversalRecord {
   // how many there were. `buffer`: scratch for their vertices.
   std::size_t replay(std::size_t t, std::size_t chunk, std::span<PolygonSink* const> sinks,
                      std::vector<RvdVertex>& buffer) const;
+  // How many polygons triangle t has.
+  std::size_t polygon_count(std::size_t t) const {
+    const Chunk& c = chunk_of(t);
+    return c.first[t % chunk_size_ + 1] - c.first[t % chunk_size_];
+  }
 
  private:
   friend class PolygonRecorder;
@@ -88,6 +93,10 @@ class PolygonRecorder : public PolygonSink {
 
 struct TraversalMemory::State {
   TraversalRecord record;
+  // Of the record: a number no other record has had (0: none), which the sinks that keep chunks
+  // hold when they served the traversal that made it (PolygonSink::keeps_chunks). A traversal
+  // that changes no chunk keeps it.
+  std::uint64_t version = 0;
   // The lists of the last diagram made with the memory (shared with it), and its seeds.
   std::shared_ptr<const SeedNeighbors> lists;
   std::vector<Vec3> lists_at;
