@@ -3,6 +3,7 @@
 // chunks and order, whether seeds moved, came, went or tie with others.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numbers>
@@ -13,6 +14,7 @@
 #include "cvtmesh/sampling.hpp"
 #include "geometry/random.hpp"
 #include "support/shapes.hpp"
+#include "voronoi/cell_pieces.hpp"
 #include "voronoi/multi_nerve.hpp"
 
 namespace cvtmesh {
@@ -242,7 +244,16 @@ TEST(TraversalMemory, AKeptMultiNerveIsTheFreshOne) {
     EXPECT_EQ(kept.result().vertices, fresh.result().vertices);
     EXPECT_EQ(kept.result().triangles, fresh.result().triangles);
     EXPECT_EQ(kept.vertex_seed(), fresh.vertex_seed());
-    EXPECT_EQ(kept.pieces().pieces().size(), fresh.pieces().pieces().size());
+    // The cells' pieces too: those of cells that no change reached are kept as they were.
+    const std::vector<CellPiece>& a = kept.pieces().pieces();
+    const std::vector<CellPiece>& b = fresh.pieces().pieces();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(std::tie(a[i].seed, a[i].first, a[i].area, a[i].largest_area),
+                std::tie(b[i].seed, b[i].first, b[i].area, b[i].largest_area));
+      EXPECT_EQ(a[i].moment, b[i].moment);
+      EXPECT_EQ(a[i].largest_centre, b[i].largest_centre);
+    }
     far_pieces += fresh.result().vertices.size() - seeds.size();
   };
   expect_fresh();
@@ -254,7 +265,49 @@ TEST(TraversalMemory, AKeptMultiNerveIsTheFreshOne) {
   expect_fresh();
   seeds.resize(seeds.size() - 25);
   expect_fresh();
+  // One seed at a time, as topology control's rounds add them where defects are.
+  for (const Vec3& p : sample_surface(sheets, 30, 11)) {
+    seeds.push_back(p);
+    expect_fresh();
+  }
   EXPECT_GT(far_pieces, 0u) << "no cell in several pieces: the test tests too little";
+}
+
+// A cell that leaves a chunk that changed, and keeps its polygons in a chunk kept, is joined
+// again: its pieces are not as they were.
+TEST(TraversalMemory, KeptCellPiecesJoinAgainACellThatLeftAChangedChunk) {
+  const TriangleMesh square{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}}};
+  // The whole of triangle t as seed s's polygon (corner k on edges k and k + 2 mod 3).
+  std::array<RvdVertex, 3> corners;
+  const auto whole = [&](Index s, Index t) {
+    for (int k = 0; k < 3; ++k)
+      corners[k] = {square.vertices[square.triangles[t][k]], 0, {-(k + 1), -((k + 2) % 3 + 1)}};
+    return RvdPolygon{s, t, corners};
+  };
+  // One chunk per triangle. First seed 0 has both triangles; then chunk 0 is kept and seed 1
+  // takes triangle 1.
+  CellPieceCollector kept(CellPieceCollector::Keeping{}, square, nullptr);
+  kept.begin(2);
+  kept.polygon(0, whole(0, 0));
+  kept.polygon(1, whole(0, 1));
+  kept.end();
+  ASSERT_EQ(kept.pieces().size(), 1u);
+  EXPECT_DOUBLE_EQ(kept.pieces()[0].area, 1.0);
+  kept.begin_kept(2, {1, 0});
+  kept.polygon(1, whole(1, 1));
+  kept.end();
+  CellPieceCollector fresh(square);
+  fresh.begin(2);
+  fresh.polygon(0, whole(0, 0));
+  fresh.polygon(1, whole(1, 1));
+  fresh.end();
+  ASSERT_EQ(kept.pieces().size(), fresh.pieces().size());
+  for (std::size_t i = 0; i < fresh.pieces().size(); ++i) {
+    EXPECT_EQ(kept.pieces()[i].seed, fresh.pieces()[i].seed);
+    EXPECT_EQ(kept.pieces()[i].area, fresh.pieces()[i].area);
+  }
+  EXPECT_EQ(kept.piece_at(0, 0), fresh.piece_at(0, 0));
+  EXPECT_EQ(kept.piece_at(1, 1), fresh.piece_at(1, 1));
 }
 
 TEST(TraversalMemory, AnotherSurfaceStartsAfresh) {

@@ -10,6 +10,7 @@
 #include <span>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include "geometry/index_range.hpp"
 #include "geometry/union_find.hpp"
@@ -50,11 +51,19 @@ void CellPieceCollector::begin(std::size_t chunks) {
   if (!rings_) own_rings_.emplace(surface_);
   polygon_chunks_.assign(chunks, {});
   all_kept_ = false;
+  kept_chunks_.clear();
 }
 
 void CellPieceCollector::begin_kept(std::size_t /*chunks*/, const std::vector<char>& kept) {
   all_kept_ = std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
-  if (!rings_ && !all_kept_) own_rings_.emplace(surface_);
+  if (all_kept_) return;
+  if (!rings_) own_rings_.emplace(surface_);
+  // The cells with a polygon in a chunk that changes (end() joins them again).
+  changed_.assign(seeds_, 0);
+  for (std::size_t c = 0; c < kept.size(); ++c)
+    if (!kept[c])
+      for (const Polygon& polygon : polygon_chunks_[c]) changed_[polygon.seed] = 1;
+  kept_chunks_ = kept;
   keep_only(kept, polygon_chunks_);
 }
 
@@ -80,9 +89,6 @@ void CellPieceCollector::chunk_done(std::size_t chunk) {
 
 void CellPieceCollector::end() {
   if (all_kept_) return;  // the same polygons as when the pieces were found
-  // The polygons stay in their chunks, numbered in chunk order through an array of pointers:
-  // joining them into one array held every polygon twice at the peak (issue 22: extraction was
-  // 264 MB of a 490 MB run on a 500k-triangle torus).
   std::size_t polygon_count = 0;
   Index seeds = 0;
   for (auto& chunk : polygon_chunks_) {
@@ -92,68 +98,97 @@ void CellPieceCollector::end() {
   }
   // Polygon and piece ids take 32 bits (2^32 polygons would need some 170 GB).
   require_index_range(polygon_count, "polygons for the cell pieces");
+  // The cells joined again: all, or, after a traversal that kept chunks (begin_kept), those with
+  // a polygon in a chunk that changed, then or now. A cell's pieces depend on its polygons alone,
+  // so the others' are as the last end() found them (issue 18: topology control's and
+  // polishing's extractions work locally; igea.ply at 10k: this step was 0.1 s of each).
+  std::vector<char> again(seeds, 1);
+  if (!kept_chunks_.empty()) {
+    for (Index s = 0; s < std::min<Index>(seeds, seeds_); ++s) again[s] = changed_[s];
+    for (std::size_t c = 0; c < polygon_chunks_.size(); ++c)
+      if (!kept_chunks_[c])
+        for (const Polygon& polygon : polygon_chunks_[c]) again[polygon.seed] = 1;
+  }
+  // Their polygons stay in their chunks, numbered in chunk order through an array of pointers:
+  // joining them into one array held every polygon twice at the peak (issue 22: extraction was
+  // 264 MB of a 490 MB run on a 500k-triangle torus).
   std::vector<const Polygon*> polygons;
-  polygons.reserve(polygon_count);
-  for (const auto& chunk : polygon_chunks_)
-    for (const Polygon& polygon : chunk) polygons.push_back(&polygon);
-  // Per seed, its polygons as (triangle, polygon), by triangle: scattered into seed order, then
-  // each seed's few sorted. The pieces' lookup (piece_at) later reuses it, polygon → piece.
+  if (kept_chunks_.empty()) polygons.reserve(polygon_count);
   std::vector<std::size_t> polygons_of(static_cast<std::size_t>(seeds) + 1, 0);
-  for (const Polygon* polygon : polygons) ++polygons_of[polygon->seed + 1];
-  piece_offsets_ = seed_offsets(std::move(polygons_of));
-  std::vector<std::size_t> next(piece_offsets_.begin(), piece_offsets_.end() - 1);
-  piece_of_.resize(polygons.size());
-  for (Index p = 0; p < polygons.size(); ++p)
-    piece_of_[next[polygons[p]->seed]++] = {polygons[p]->triangle, p};
-  std::vector<std::size_t>().swap(next);
-  sort_each_seed(piece_of_, piece_offsets_,
+  for (const auto& chunk : polygon_chunks_)
+    for (const Polygon& polygon : chunk)
+      if (again[polygon.seed]) {
+        polygons.push_back(&polygon);
+        ++polygons_of[polygon.seed + 1];
+      }
+  // Per cell, its polygons as (triangle, polygon), by triangle: scattered into seed order, then
+  // each seed's few sorted.
+  const std::vector<std::size_t> offsets = seed_offsets(std::move(polygons_of));
+  std::vector<PieceOf> joined(polygons.size());
+  {
+    std::vector<std::size_t> next(offsets.begin(), offsets.end() - 1);
+    for (Index p = 0; p < polygons.size(); ++p)
+      joined[next[polygons[p]->seed]++] = {polygons[p]->triangle, p};
+  }
+  sort_each_seed(joined, offsets,
                  [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
+  const auto entry_of = [&](Index seed, Index triangle) -> const PieceOf* {
+    const PieceOf* begin = joined.data() + offsets[seed];
+    const PieceOf* end = joined.data() + offsets[seed + 1];
+    const PieceOf* at = std::lower_bound(begin, end, triangle,
+                                         [](const PieceOf& x, Index t) { return x.triangle < t; });
+    return at != end && at->triangle == triangle ? at : nullptr;
+  };
   // Polygons of a cell around an input edge are one piece (see begin). A cell's polygons meet
   // only each other, so the cells are joined and summed on their own, in parallel; each cell's
   // polygons come in traversal order (by triangle, as the chunks hold them), so its pieces' sums
-  // and first polygons do not depend on the thread count. (igea.ply at 10k: 430k polygons, this
-  // step 0.08 s of each extraction's 0.11 s of serial work.)
+  // and first polygons do not depend on the thread count.
   UnionFind roots(polygons.size());  // each cell's sets apart from the others'
   // Per root polygon, its piece's index among its seed's: first in the order their first
   // polygons come, then sorted by area (largest first), then first polygon.
   constexpr Index kNone = std::numeric_limits<Index>::max();
   std::vector<Index> rank(polygons.size(), kNone);
-  // Per seed, its piece count (at seed + 1): the cells are joined first, then their pieces
-  // summed in place in pieces_ (a vector of pieces per seed took 40 MB, in 3.5 million
-  // allocations, for igea.ply at 500k seeds).
+  // Per cell joined, its piece count (at seed + 1): the cells are joined first, then their pieces
+  // summed in place (a vector of pieces per seed took 40 MB, in 3.5 million allocations, for
+  // igea.ply at 500k seeds).
   std::vector<std::size_t> pieces_of(static_cast<std::size_t>(seeds) + 1, 0);
   const SideRings& rings = rings_ ? *rings_ : *own_rings_;
   tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
     for (Index seed = range.begin(); seed != range.end(); ++seed) {
-      const std::size_t begin = piece_offsets_[seed], end = piece_offsets_[seed + 1];
+      if (!again[seed]) continue;
+      const std::size_t begin = offsets[seed], end = offsets[seed + 1];
       for (std::size_t i = begin; i < end; ++i) {
-        const std::size_t p = piece_of_[i].piece;
+        const std::size_t p = joined[i].piece;
         const Polygon& polygon = *polygons[p];
         for (std::uint32_t e = 0; e < 3; ++e) {
           if (!(polygon.sides & (1u << e))) continue;
           const std::uint32_t side = 3 * polygon.triangle + e;
           for (std::uint32_t other = rings.next(side); other != side; other = rings.next(other))
-            if (const PieceOf* q = entry(seed, other / 3)) roots.unite(p, q->piece);
+            if (const PieceOf* q = entry_of(seed, other / 3)) roots.unite(p, q->piece);
         }
       }
       Index count = 0;
       for (std::size_t i = begin; i < end; ++i)
-        if (Index& r = rank[roots.find(piece_of_[i].piece)]; r == kNone) r = count++;
+        if (Index& r = rank[roots.find(joined[i].piece)]; r == kNone) r = count++;
       pieces_of[seed + 1] = count;
     }
   });
   own_rings_.reset();
-  const std::vector<std::size_t> first_piece = seed_offsets(std::move(pieces_of));
-  pieces_.resize(first_piece[seeds]);
+  const std::vector<std::size_t> first_joined = seed_offsets(std::move(pieces_of));
+  std::vector<CellPiece> fresh(first_joined[seeds]);
+  // Every cell joined again (a first traversal, or changes all over): the arrays as they are
+  // are the result, with no copy into place.
+  const bool all_again = std::all_of(again.begin(), again.end(), [](char a) { return a != 0; });
   tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
     constexpr std::size_t kUnset = static_cast<std::size_t>(-1);
     for (Index seed = range.begin(); seed != range.end(); ++seed) {
+      if (!again[seed]) continue;
       const auto pieces =
-          std::span(pieces_).subspan(first_piece[seed], first_piece[seed + 1] - first_piece[seed]);
+          std::span(fresh).subspan(first_joined[seed], first_joined[seed + 1] - first_joined[seed]);
       for (CellPiece& piece : pieces) piece = {seed, kUnset, 0, {}, {}, -1};
-      const std::size_t begin = piece_offsets_[seed], end = piece_offsets_[seed + 1];
+      const std::size_t begin = offsets[seed], end = offsets[seed + 1];
       for (std::size_t i = begin; i < end; ++i) {
-        const std::size_t p = piece_of_[i].piece;
+        const std::size_t p = joined[i].piece;
         CellPiece& piece = pieces[rank[roots.find(p)]];
         if (piece.first == kUnset) piece.first = p;
         const Polygon& polygon = *polygons[p];
@@ -168,15 +203,62 @@ void CellPieceCollector::end() {
       std::sort(pieces.begin(), pieces.end(), [](const CellPiece& x, const CellPiece& y) {
         return std::make_tuple(-x.area, x.first) < std::make_tuple(-y.area, y.first);
       });
-      for (Index k = 0; k < pieces.size(); ++k) rank[roots.find(pieces[k].first)] = k;
-      // Each of the seed's entries becomes its piece's index in pieces_ (the first pass, which
-      // read them with entry, is over).
+      for (Index k = 0; k < pieces.size(); ++k) {
+        rank[roots.find(pieces[k].first)] = k;
+        pieces[k].first = polygons[pieces[k].first]->triangle;  // see CellPiece::first
+      }
+      // Each entry's piece, as its index among its seed's (in pieces_, where all are joined).
+      const auto base = static_cast<Index>(all_again ? first_joined[seed] : 0);
       for (std::size_t i = begin; i < end; ++i)
-        piece_of_[i].piece =
-            static_cast<Index>(first_piece[seed]) + rank[roots.find(piece_of_[i].piece)];
+        joined[i].piece = base + rank[roots.find(joined[i].piece)];
     }
   });
-  polygons = {};
+  seeds_ = seeds;
+  if (all_again) {
+    piece_of_ = std::move(joined);
+    piece_offsets_ = offsets;
+    pieces_ = std::move(fresh);
+    first_piece_ = first_joined;
+    if (!keeping_) polygon_chunks_.clear();
+    return;
+  }
+  // All cells in seed order: those joined again from above, the others as they were.
+  const std::vector<PieceOf> old_of = std::exchange(piece_of_, {});
+  const std::vector<std::size_t> old_offsets = std::exchange(piece_offsets_, {});
+  const std::vector<CellPiece> old_pieces = std::exchange(pieces_, {});
+  const std::vector<std::size_t> old_first = std::exchange(first_piece_, {});
+  std::vector<std::size_t> entries(static_cast<std::size_t>(seeds) + 1, 0);
+  std::vector<std::size_t> pieces_per(static_cast<std::size_t>(seeds) + 1, 0);
+  for (Index s = 0; s < seeds; ++s) {
+    entries[s + 1] = again[s] ? offsets[s + 1] - offsets[s] : old_offsets[s + 1] - old_offsets[s];
+    pieces_per[s + 1] =
+        again[s] ? first_joined[s + 1] - first_joined[s] : old_first[s + 1] - old_first[s];
+  }
+  piece_offsets_ = seed_offsets(std::move(entries));
+  first_piece_ = seed_offsets(std::move(pieces_per));
+  piece_of_.resize(piece_offsets_[seeds]);
+  pieces_.resize(first_piece_[seeds]);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, seeds), [&](const auto& range) {
+    for (Index s = range.begin(); s != range.end(); ++s) {
+      const auto at = static_cast<Index>(first_piece_[s]);
+      if (again[s]) {
+        std::copy(fresh.begin() + static_cast<std::ptrdiff_t>(first_joined[s]),
+                  fresh.begin() + static_cast<std::ptrdiff_t>(first_joined[s + 1]),
+                  pieces_.begin() + static_cast<std::ptrdiff_t>(at));
+        for (std::size_t i = offsets[s]; i < offsets[s + 1]; ++i)
+          piece_of_[piece_offsets_[s] + i - offsets[s]] = {joined[i].triangle,
+                                                           at + joined[i].piece};
+      } else {
+        std::copy(old_pieces.begin() + static_cast<std::ptrdiff_t>(old_first[s]),
+                  old_pieces.begin() + static_cast<std::ptrdiff_t>(old_first[s + 1]),
+                  pieces_.begin() + static_cast<std::ptrdiff_t>(at));
+        const auto shift = static_cast<Index>(old_first[s]);
+        for (std::size_t i = old_offsets[s]; i < old_offsets[s + 1]; ++i)
+          piece_of_[piece_offsets_[s] + i - old_offsets[s]] = {old_of[i].triangle,
+                                                               at + old_of[i].piece - shift};
+      }
+    }
+  });
   if (!keeping_) polygon_chunks_.clear();
 }
 

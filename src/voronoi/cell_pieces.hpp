@@ -25,7 +25,7 @@ inline int input_edge_of_side(const RvdVertex& a, const RvdVertex& b) {
 
 struct CellPiece {
   Index seed;
-  std::size_t first;  // its first polygon (in traversal order), for a stable order
+  std::size_t first;  // the triangle of its first polygon (in traversal order), for a stable order
   double area;
   Vec3 moment;          // area × centroid
   Vec3 largest_centre;  // the centroid of its largest polygon: a point on the surface
@@ -82,6 +82,12 @@ class CellPieceCollector : public PolygonSink {
   };
   std::vector<PieceOf> piece_of_;
   std::vector<std::size_t> piece_offsets_;
+  std::vector<std::size_t> first_piece_;  // per seed, where its pieces start in pieces_
+  Index seeds_ = 0;                       // the seeds end() found pieces for
+  // Of a traversal that keeps chunks: which (empty: none, all came again), and the cells that had
+  // a polygon in a chunk that did not.
+  std::vector<char> kept_chunks_;
+  std::vector<char> changed_;
   // The entry of `seed`'s polygon on `triangle` in piece_of_, or null where it has none.
   const PieceOf* entry(Index seed, Index triangle) const;
 };
