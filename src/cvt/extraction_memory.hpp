@@ -17,15 +17,17 @@
 namespace cvtmesh {
 
 struct ExtractionMemory {
-  // `rings`: the surface's SideRings; `interrupt`: the remesh's. Both outlive the memory.
+  // `rings`: the surface's SideRings; `interrupt`: the remesh's. All three outlive the memory.
   ExtractionMemory(const TriangleMesh& surface, const SideRings& rings, const Interrupt& interrupt)
-      : nerve(CellPieceCollector::Keeping{}, surface, &rings), stop(interrupt) {}
+      : surface(surface), nerve(CellPieceCollector::Keeping{}, surface, &rings), stop(interrupt) {}
   // With the surface's SideRings found here.
   ExtractionMemory(const TriangleMesh& surface, const Interrupt& interrupt)
-      : own_rings(std::make_unique<SideRings>(surface)),
+      : surface(surface),
+        own_rings(std::make_unique<SideRings>(surface)),
         nerve(CellPieceCollector::Keeping{}, surface, own_rings.get()),
         stop(interrupt) {}
 
+  const TriangleMesh& surface;
   std::unique_ptr<const SideRings> own_rings;  // where none were given
   TraversalMemory traversal;
   MultiNerveBuilder nerve;  // the restricted Delaunay triangulation (multi-nerve)
@@ -33,11 +35,10 @@ struct ExtractionMemory {
   InterruptSink stop;
   // The shapes of the cells' pieces, for topology control (defect_seeds): made where it first
   // needs them, and kept up from then on by every traversal with the memory, so that no round
-  // hands it every polygon again. The surface's is `surface`.
+  // hands it every polygon again.
   std::optional<PieceEulerCollector> piece_shapes;
-  PieceEulerCollector& shapes_of(const TriangleMesh& surface) {
+  void make_piece_shapes() {
     if (!piece_shapes) piece_shapes.emplace(PieceEulerCollector::Keeping{}, surface);
-    return *piece_shapes;
   }
 };
 

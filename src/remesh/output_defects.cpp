@@ -77,7 +77,7 @@ DefectSeeds defect_seeds(const TriangleMesh& surface, const std::vector<Vec3>& s
   // The pieces' shapes (Euler characteristics, farthest vertices), where wanted; once made, kept
   // up by every traversal.
   const bool shaped = check_discs || !exhaustive;
-  if (shaped) memory.shapes_of(surface);
+  if (shaped) memory.make_piece_shapes();
   if (memory.piece_shapes) {
     memory.piece_shapes->for_diagram(rvd);
     sinks.push_back(&*memory.piece_shapes);

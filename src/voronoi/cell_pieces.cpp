@@ -39,6 +39,18 @@ void sort_each_seed(std::vector<T>& items, const std::vector<std::size_t>& offse
   });
 }
 
+// The entry of `seed` on `triangle` in `entries` (each seed's from offsets[seed], by triangle),
+// or null where it has none.
+template <class Entry>
+const Entry* entry_on(const std::vector<Entry>& entries, const std::vector<std::size_t>& offsets,
+                      Index seed, Index triangle) {
+  const Entry* begin = entries.data() + offsets[seed];
+  const Entry* end = entries.data() + offsets[seed + 1];
+  const Entry* at = std::lower_bound(begin, end, triangle,
+                                     [](const Entry& x, Index t) { return x.triangle < t; });
+  return at != end && at->triangle == triangle ? at : nullptr;
+}
+
 }  // namespace
 
 void CellPieceCollector::begin(std::size_t chunks) {
@@ -101,7 +113,8 @@ void CellPieceCollector::end() {
   // The cells joined again: all, or, after a traversal that kept chunks (begin_kept), those with
   // a polygon in a chunk that changed, then or now. A cell's pieces depend on its polygons alone,
   // so the others' are as the last end() found them (issue 18: topology control's and
-  // polishing's extractions work locally; igea.ply at 10k: this step was 0.1 s of each).
+  // polishing's extractions work locally; igea.ply at 10k on one thread: this step took 0.1 s
+  // of each extraction).
   std::vector<char> again(seeds, 1);
   if (!kept_chunks_.empty()) {
     for (Index s = 0; s < std::min<Index>(seeds, seeds_); ++s) again[s] = changed_[s];
@@ -132,13 +145,6 @@ void CellPieceCollector::end() {
   }
   sort_each_seed(joined, offsets,
                  [](const PieceOf& a, const PieceOf& b) { return a.triangle < b.triangle; });
-  const auto entry_of = [&](Index seed, Index triangle) -> const PieceOf* {
-    const PieceOf* begin = joined.data() + offsets[seed];
-    const PieceOf* end = joined.data() + offsets[seed + 1];
-    const PieceOf* at = std::lower_bound(begin, end, triangle,
-                                         [](const PieceOf& x, Index t) { return x.triangle < t; });
-    return at != end && at->triangle == triangle ? at : nullptr;
-  };
   // Polygons of a cell around an input edge are one piece (see begin). A cell's polygons meet
   // only each other, so the cells are joined and summed on their own, in parallel; each cell's
   // polygons come in traversal order (by triangle, as the chunks hold them), so its pieces' sums
@@ -164,7 +170,8 @@ void CellPieceCollector::end() {
           if (!(polygon.sides & (1u << e))) continue;
           const std::uint32_t side = 3 * polygon.triangle + e;
           for (std::uint32_t other = rings.next(side); other != side; other = rings.next(other))
-            if (const PieceOf* q = entry_of(seed, other / 3)) roots.unite(p, q->piece);
+            if (const PieceOf* q = entry_on(joined, offsets, seed, other / 3))
+              roots.unite(p, q->piece);
         }
       }
       Index count = 0;
@@ -263,11 +270,7 @@ void CellPieceCollector::end() {
 }
 
 const CellPieceCollector::PieceOf* CellPieceCollector::entry(Index seed, Index triangle) const {
-  const PieceOf* begin = piece_of_.data() + piece_offsets_[seed];
-  const PieceOf* end = piece_of_.data() + piece_offsets_[seed + 1];
-  const PieceOf* at = std::lower_bound(begin, end, triangle,
-                                       [](const PieceOf& x, Index t) { return x.triangle < t; });
-  return at != end && at->triangle == triangle ? at : nullptr;
+  return entry_on(piece_of_, piece_offsets_, seed, triangle);
 }
 
 std::size_t CellPieceCollector::piece_at(Index seed, Index triangle) const {

@@ -24,6 +24,7 @@ class MultiNerveBuilder : public PolygonSink {
   MultiNerveBuilder(CellPieceCollector::Keeping keeping, const TriangleMesh& surface,
                     const SideRings* rings)
       : pieces_(keeping, surface, rings) {}
+  // Before each traversal: its diagram, which outlives the traversal and the calls after it.
   void for_diagram(const RestrictedVoronoiDiagram& rvd) { rvd_ = &rvd; }
   void begin(std::size_t chunks) override;
   void polygon(std::size_t chunk, const RvdPolygon& polygon) override;
