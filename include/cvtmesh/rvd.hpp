@@ -58,10 +58,11 @@ class PolygonSink {
   // one traversal after another with the same TraversalMemory, where a few seeds change between
   // them, can keep what it holds of the chunks whose polygons have not changed, instead of
   // having those polygons handed over again. Such a sink returns true here. A traversal with a
-  // memory whose last traversal this sink served then calls begin_kept in place of begin: chunk c
-  // is as the sink last had it where kept[c] is nonzero, and gets no polygons and no chunk_done.
-  // Otherwise (a first traversal, another memory, no memory) the sink gets begin and every
-  // polygon, as any sink.
+  // memory whose polygons this sink took (it served the traversal that left them there, or one
+  // since that changed no chunk) then calls begin_kept in place of begin: chunk c is as the sink
+  // last had it where kept[c] is nonzero, and gets no polygons and no chunk_done. Otherwise (a
+  // first traversal, another memory, no memory) the sink gets begin and every polygon, as any
+  // sink.
   virtual bool keeps_chunks() const { return false; }
   virtual void begin_kept(std::size_t chunks, const std::vector<char>& /*kept*/) { begin(chunks); }
 
