@@ -67,7 +67,7 @@ void CellPieceCollector::begin(std::size_t chunks) {
 }
 
 void CellPieceCollector::begin_kept(std::size_t /*chunks*/, const std::vector<char>& kept) {
-  all_kept_ = std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
+  all_kept_ = all_kept(kept);
   if (all_kept_) return;
   if (!rings_) own_rings_.emplace(surface_);
   // The cells with a polygon in a chunk that changes (end() joins them again).

@@ -57,6 +57,8 @@ class CellPieceCollector : public PolygonSink {
   // The index in pieces() of the piece holding the polygon of `seed` on input `triangle` (a cell
   // meets a triangle in at most one polygon: both are convex).
   std::size_t piece_at(Index seed, Index triangle) const;
+  // Whether the last traversal kept every chunk (begin_kept): the pieces are as they were.
+  bool kept_every_chunk() const { return all_kept_; }
 
  private:
   struct Polygon {

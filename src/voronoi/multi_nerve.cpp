@@ -11,14 +11,12 @@ namespace cvtmesh {
 
 void MultiNerveBuilder::begin(std::size_t chunks) {
   pieces_.begin(chunks);
-  all_kept_ = false;
   chunks_.assign(chunks, {});
   at_seed_.assign(chunks, {});
 }
 
 void MultiNerveBuilder::begin_kept(std::size_t chunks, const std::vector<char>& kept) {
   pieces_.begin_kept(chunks, kept);
-  all_kept_ = std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
   keep_only(kept, chunks_, at_seed_);
 }
 
@@ -44,7 +42,7 @@ void MultiNerveBuilder::end() {
   const std::vector<Vec3>& seeds = rvd_->seeds();
   // The same polygons of the same seeds: the triangulation is as it was (topology control's
   // search for where to add seeds traverses the seeds its extraction just did).
-  if (all_kept_ && seeds == seeds_at_end_) return;
+  if (pieces_.kept_every_chunk() && seeds == seeds_at_end_) return;
   if (keeps_chunks()) seeds_at_end_ = seeds;
   const std::vector<CellPiece>& pieces = pieces_.pieces();
   result_ = {};

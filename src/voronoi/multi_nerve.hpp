@@ -63,10 +63,7 @@ class MultiNerveBuilder : public PolygonSink {
   std::vector<std::vector<std::pair<Index, Index>>> at_seed_;
   TriangleMesh result_;
   std::vector<Index> vertex_seed_;
-  // Of a builder that keeps chunks: whether this traversal kept all, and the seeds of the last
-  // end().
-  bool all_kept_ = false;
-  std::vector<Vec3> seeds_at_end_;
+  std::vector<Vec3> seeds_at_end_;  // of a builder that keeps chunks: the last end()'s seeds
 };
 
 }  // namespace cvtmesh

@@ -22,6 +22,7 @@
 #include "geometry/point_tree.hpp"
 #include "predicates/side_of_bisector.hpp"
 #include "system/elapsed.hpp"
+#include "voronoi/kept_chunks.hpp"
 #include "voronoi/polygon_reach.hpp"
 #include "voronoi/seed_neighbors.hpp"
 #include "voronoi/traversal_record.hpp"
@@ -479,8 +480,7 @@ TraversalStats RestrictedVoronoiDiagram::Impl::traverse(std::span<PolygonSink* c
     });
   // The sinks that keep their chunks from `old` (PolygonSink::keeps_chunks); the others get
   // those chunks' polygons replayed. A traversal that changes no chunk keeps the version.
-  const bool same =
-      adoptable && std::all_of(kept.begin(), kept.end(), [](char k) { return k != 0; });
+  const bool same = adoptable && all_kept(kept);
   const std::uint64_t served = version ? *version : 0;
   if (version && !same) *version = next_record_version();
   std::vector<PolygonSink*> replayed;
