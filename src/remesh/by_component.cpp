@@ -1,5 +1,8 @@
 #include "remesh/by_component.hpp"
 
+#include <tbb/parallel_for_each.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -321,6 +324,18 @@ std::vector<RemeshSettings> component_settings(const TriangleMesh& mesh,
   return all;
 }
 
+// The parts' phase times, summed by append, scaled to `wall`, the time the parts took side by
+// side: the report's time is the remesh's wall time, and each phase keeps its share of the work.
+void in_wall_time(RemeshResult& all, double wall) {
+  const double summed =
+      all.seconds_initialization + all.seconds_rcvt + all.seconds_ccvt + all.seconds_extraction;
+  if (!(summed > wall)) return;
+  const double k = wall / summed;
+  for (double* phase : {&all.seconds_initialization, &all.seconds_rcvt, &all.seconds_ccvt,
+                        &all.seconds_extraction, &all.seconds_topology})
+    *phase *= k;
+}
+
 // Appends one component's output to the whole's. Counts add up; rounds are the most any
 // component took; energies add up (integrals over disjoint surfaces), iteration by iteration, a
 // component that stopped early counting at its last energy.
@@ -595,18 +610,34 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
   double gradient2_initial = 0, gradient2_final = 0;
   std::vector<std::pair<Index, Index>> pinches;  // (input vertex, output vertex)
   std::vector<SheetVertices> sheets;             // per part, its output's vertices in the whole
-  for (std::size_t c = 0; c < parts.size(); ++c) {
+  // The parts are remeshed side by side, the largest first: a small part alone keeps few cores
+  // busy (on two cores, bones.off's 26 components at 5k: the whole 0.77-0.83 of the time one after
+  // another took). Each part's output depends on neither the thread count nor the order, so the
+  // whole's does not. Isolated, a thread that waits inside one part's parallel work takes none
+  // of another part's: no part's remesh runs nested on another's stack.
+  std::vector<UnitRemesh> remeshed(parts.size());
+  std::vector<std::size_t> order(parts.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return parts[a].mesh.triangles.size() > parts[b].mesh.triangles.size();
+  });
+  const auto parts_start = std::chrono::steady_clock::now();
+  tbb::parallel_for_each(order.begin(), order.end(), [&](std::size_t c) {
     RemeshSettings& s = part_settings[c];
     if (settings.time_limit > 0) {
       // What is left of the limit; a component that starts after it works not at all (its
       // seeds as sampled make its output), as the whole would.
       s.time_limit = std::max(settings.time_limit - seconds_since(start), 1e-9);
     }
-    UnitRemesh part;
     if (as_it_is(parts[c]))
-      part.result.mesh = parts[c].mesh;
+      remeshed[c].result.mesh = parts[c].mesh;
     else
-      part = remesh_unit_topology_first(parts[c].mesh, s);
+      tbb::this_task_arena::isolate(
+          [&] { remeshed[c] = remesh_unit_topology_first(parts[c].mesh, s); });
+  });
+  const double parts_seconds = seconds_since(parts_start);
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    UnitRemesh& part = remeshed[c];
     sheets.push_back(
         {static_cast<Index>(all.mesh.vertices.size()),
          static_cast<Index>(all.mesh.vertices.size() + part.result.mesh.vertices.size())});
@@ -622,6 +653,7 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
     pinches.insert(pinches.end(), zipped->begin(), zipped->end());
   }
   weld_pinches(all, std::move(pinches));
+  in_wall_time(all, parts_seconds);
   all.gradient_norm_initial = std::sqrt(gradient2_initial);
   all.gradient_norm_final = std::sqrt(gradient2_final);
   if (split) in_input_ids(all, *junction, input.vertices.size());
