@@ -108,8 +108,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
         r.feature_edges_dropped.size());
   if (r.gap_length_min > 0)
     text += fmt::format(
-        "  sizing    even, graded down to feature gaps narrower than half an edge: shortest "
-        "target length {:.3g} of the even one\n",
+        "  sizing    even, graded down to feature gaps and handles narrower than half an edge: "
+        "shortest target length {:.3g} of the even one\n",
         r.gap_length_min);
   if (r.sizes_adapted)
     text +=

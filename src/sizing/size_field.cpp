@@ -7,6 +7,7 @@
 
 #include "cvtmesh/errors.hpp"
 #include "sizing/gradation.hpp"
+#include "sizing/small_handles.hpp"
 #include "sizing/small_holes.hpp"
 #include "sizing/split_for_sizes.hpp"
 
@@ -117,31 +118,52 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
 
 // The feature gaps (raw.gap): an adaptive sizing's looked for under a few times the lengths
 // scaled by k (the count's factor moves little from its first estimate, and a wider gap is no
-// narrow place), an even one's under half its length; and an adaptive sizing's holes under its
-// clamp (raw.hole).
-void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
-                      const SizingSettings& s, RawSizes& raw) {
+// narrow place), an even one's under half its length, where handles thinner than that narrow it
+// too; and an adaptive sizing's holes and handles under its clamp (raw.hole).
+bool add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
+                      const SizingSettings& s, RawSizes& raw, bool handles) {
   constexpr double kGapReach = 3;
   // An even sizing grades down to gaps under half its length only: at wider ones the even
   // output does as well (narrowing to gaps under the length itself cost stanford-bunny.obj at
   // 5k and blade.off at 5k 5-17° of θmin on the corpus).
   constexpr double kEvenGapReach = 0.5;
-  if ((s.active() && !(s.adaptive > 0)) || !features || features->curves.empty()) return;
-  const double reach = s.adaptive > 0 ? kGapReach : kEvenGapReach;
-  std::vector<double> limit(raw.h.size());
-  for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = reach * raw.h[v] * k;
-  const std::vector<double> capped = capped_by_feature_gaps(
-      mesh, *features, limit, s.adaptive > 0 ? WedgeGaps::all : WedgeGaps::traced_narrow);
-  raw.gap.assign(limit.size(), std::numeric_limits<double>::infinity());
-  for (std::size_t v = 0; v < limit.size(); ++v)
-    if (capped[v] < limit[v]) raw.gap[v] = capped[v];
-  if (!(s.adaptive > 0)) return;
+  if (s.active() && !(s.adaptive > 0)) return false;
+  const bool adaptive = s.adaptive > 0;
+  const std::size_t n = raw.h.size();
+  raw.gap.assign(n, std::numeric_limits<double>::infinity());
+  if (features && !features->curves.empty()) {
+    const double reach = adaptive ? kGapReach : kEvenGapReach;
+    std::vector<double> limit(n);
+    for (std::size_t v = 0; v < n; ++v) limit[v] = reach * raw.h[v] * k;
+    const std::vector<double> capped = capped_by_feature_gaps(
+        mesh, *features, limit, adaptive ? WedgeGaps::all : WedgeGaps::traced_narrow);
+    for (std::size_t v = 0; v < n; ++v)
+      if (capped[v] < limit[v]) raw.gap[v] = capped[v];
+  }
+  bool handled = false;  // whether a handle narrows a size
+  if (!adaptive) {
+    // Even lengths (raw.h is 1): a handle is as narrow a place as a gap.
+    if (handles)
+      for (std::size_t v = 0; const double w : handle_widths(mesh, kEvenGapReach * k)) {
+        handled |= w < raw.gap[v];
+        raw.gap[v] = std::min(raw.gap[v], w);
+        ++v;
+      }
+    return handled;
+  }
   const double under = raw.floor * k;
-  std::vector<double> capped_at_holes(limit.size(), under);
+  std::vector<double> capped_at_holes(n, under);
   cap_at_small_holes(mesh, capped_at_holes);
-  raw.hole.assign(limit.size(), std::numeric_limits<double>::infinity());
-  for (std::size_t v = 0; v < limit.size(); ++v)
+  if (handles)
+    for (std::size_t v = 0; const double w : handle_widths(mesh, under)) {
+      handled |= w < capped_at_holes[v];
+      capped_at_holes[v] = std::min(capped_at_holes[v], w);
+      ++v;
+    }
+  raw.hole.assign(n, std::numeric_limits<double>::infinity());
+  for (std::size_t v = 0; v < n; ++v)
     if (capped_at_holes[v] < under) raw.hole[v] = capped_at_holes[v];
+  return handled;
 }
 
 // Whether an adaptive sizing narrows to a hole under its clamp (RawSizes::hole).
@@ -291,7 +313,9 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
                                          std::optional<TriangleMesh>* split_mesh) {
   const SizingSettings& s = settings.sizing;
   const bool gaps_only = !s.active() && s.gap_gradation > 0;
-  if (!s.active() && !(gaps_only && features && !features->curves.empty())) return std::nullopt;
+  // Even lengths narrow at feature gaps and at handles only.
+  if (!s.active() && !(gaps_only && ((features && !features->curves.empty()) || has_handles(mesh))))
+    return std::nullopt;
   const double min = s.min_edge_length, max = s.max_edge_length;
   if (!(min >= 0) || !(max >= 0) || !std::isfinite(min) || !std::isfinite(max))
     throw InvalidArgument("the edge length clamps must be finite and not negative");
@@ -317,7 +341,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
       throw InvalidArgument("the edge length must be positive");
     if (length > 0) k = length / area_median(mesh, h.h);
   }
-  add_feature_gaps(mesh, features, k, s, h);
+  const bool handled = add_feature_gaps(mesh, features, k, s, h, true);
   if (gaps_only && no_gap(h)) return std::nullopt;
   // The field at gradation `g` (for an even sizing; the settings' otherwise), on `mesh` split
   // for it into `storage` where the lengths change fast, with `moved` (the features) moved
@@ -346,10 +370,11 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
   double g = gradation_of(s);
   std::optional<TriangleMesh> scratch;  // never split into: only with split_mesh
   std::optional<TriangleMesh>& storage = split_mesh ? *split_mesh : scratch;
-  if (gaps_only && vertices > 0) {
-    // The graded sizes take vertices from the rest of the surface, whose edges then lengthen
-    // and its chord error with them: gentler grading where they would take too many. The field
-    // that passes is the one returned.
+  // The graded sizes take vertices from the rest of the surface, whose edges then lengthen and
+  // its chord error with them: gentler grading where they would take too many. The field that
+  // passes is the one returned.
+  const auto gentle_enough = [&]() -> std::optional<SizeField> {
+    g = gradation_of(s);
     for (int step = 0; step < kGentlerSteps && g > 1; ++step) {
       Features moved = features ? *features : Features{};
       SizeField field = field_at(g, storage, features ? &moved : nullptr);
@@ -358,6 +383,22 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
         return field;
       }
       g = std::max(1.0, g * kGentler);
+    }
+    return std::nullopt;
+  };
+  if (gaps_only && vertices > 0) {
+    if (std::optional<SizeField> field = gentle_enough()) return field;
+    // Handles whose grading takes too many even at the steepest gradation are left to topology
+    // control's rounds (femur.off at 1k: two handles a thirtieth of the edge length round took
+    // a fifth of the count at a gradation of 1, the rounds then 2.4 times as long).
+    if (handled) {
+      h = raw_sizes(mesh, new_id, settings);
+      add_feature_gaps(mesh, features, k, s, h, false);
+      if (no_gap(h)) {
+        storage.reset();  // the tries above split the mesh for sizes that are gone
+        return std::nullopt;
+      }
+      if (std::optional<SizeField> field = gentle_enough()) return field;
     }
   }
   return field_at(g, storage, features);

@@ -36,14 +36,17 @@ class SizeField {
 // The size field the settings ask for on `mesh` (the remesher's copy: spatially sorted by
 // `new_id`, scaled to about unit size, with the settings scaled alike), scaled so that the
 // output size comes out as `settings` asks (see RemeshSettings); unset when the sizing is not
-// active and no feature gap narrows the even lengths (SizingSettings::gap_gradation). An
-// adaptive or even sizing given `features` (ids of `mesh`) narrows to their gaps
-// (capped_by_feature_gaps). Given `split_mesh`, where an even sizing's lengths change too fast
-// along an edge at the gaps, the field is made on a split copy of `mesh` (split_for_sizes) put
+// active and no feature gap or handle narrows the even lengths (SizingSettings::gap_gradation).
+// An adaptive or even sizing given `features` (ids of `mesh`) narrows to their gaps
+// (capped_by_feature_gaps), and either narrows to handles thinner than the gaps it looks for
+// (handle_widths; an adaptive one, as to holes, under its clamp only). Even lengths graded down
+// to handles that would take more than a tenth of the count at the steepest gradation leave the
+// handles out, to topology control. Given `split_mesh`, where an even sizing's lengths change too
+// fast along an edge at the gaps, the field is made on a split copy of `mesh` (split_for_sizes) put
 // there, and `features` are moved onto it. Adaptive sizes are not split: their lengths stay
 // within a range, and on the corpus at 2k splitting where they change twofold along an edge met
-// the quality bar on 49 meshes against 52, with 992 seeds added against 737. Throws InvalidArgument for bad sizes or clamps, and for an adaptive sizing
-// without an output size.
+// the quality bar on 49 meshes against 52, with 992 seeds added against 737. Throws InvalidArgument
+// for bad sizes or clamps, and for an adaptive sizing without an output size.
 std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::vector<Index>& new_id,
                                          const RemeshSettings& settings,
                                          Features* features = nullptr,

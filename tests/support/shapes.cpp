@@ -233,6 +233,24 @@ TriangleMesh pinched_torus(double r, int nu, int nv) {
   return m;
 }
 
+TriangleMesh necked_torus(double r, double neck, int nu, int nv) {
+  TriangleMesh m;
+  const double tau = 2 * std::numbers::pi;
+  for (int i = 0; i < nu; ++i) {
+    const double u = tau * i / nu, off = std::min(u, tau - u) / 0.3;
+    const double bump = std::max(0.0, 1 - off * off), radius = r - (r - neck) * bump * bump;
+    for (int j = 0; j < nv; ++j) {
+      const double v = tau * j / nv, R = 1 + radius * std::cos(v);
+      m.vertices.push_back({R * std::cos(u), R * std::sin(u), radius * std::sin(v)});
+    }
+  }
+  const auto id = [&](int i, int j) { return static_cast<Index>((i % nu) * nv + (j % nv)); };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      add_quad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
 TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double)>& at) {
   TriangleMesh m;
   for (int j = 0; j <= ny; ++j)

@@ -56,6 +56,11 @@ TriangleMesh sheet_pinched_at_a_point(int n);
 // with two fans (two rounded ends touching). `nu` steps around, `nv` around the tube.
 TriangleMesh pinched_torus(double r, int nu, int nv);
 
+// A torus around z (major radius 1, tube radius r) whose tube narrows smoothly to radius `neck`
+// around angle 0 (within 0.3 radians of it): closed, genus 1, its one handle's throat a loop
+// 2π neck round. `nu` steps around, `nv` around the tube.
+TriangleMesh necked_torus(double r, double neck, int nu, int nv);
+
 // A Möbius strip of n quads (each split in two) around the unit circle, 0.4 wide: its ends
 // glued with a half twist. One boundary loop, not orientable.
 TriangleMesh moebius_strip(int n);

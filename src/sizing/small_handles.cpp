@@ -1,0 +1,274 @@
+#include "sizing/small_handles.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <span>
+#include <utility>
+
+#include "geometry/point_tree.hpp"
+#include "geometry/union_find.hpp"
+
+namespace cvtmesh {
+
+namespace {
+
+// The grid of the first, coarse search, as a share of the radius looked at.
+constexpr double kProbeCell = 0.25;
+// A vertex is on a handle's throat where its loop is at most this many times the thinnest loop
+// within its ball's radius.
+constexpr double kThroat = 1.5;
+
+// Compressed per-vertex lists: list v is items[first[v]] to items[first[v + 1]].
+struct Lists {
+  std::vector<std::size_t> first;
+  std::vector<Index> items;
+  std::span<const Index> of(Index v) const {
+    return {items.data() + first[v], items.data() + first[v + 1]};
+  }
+};
+
+// Per vertex, its neighbours along edges (sorted, each once) and the triangles at it.
+std::pair<Lists, Lists> adjacency(const TriangleMesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  Lists around, at;
+  around.first.assign(n + 1, 0);
+  at.first.assign(n + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (const Index v : t) around.first[v + 1] += 2, ++at.first[v + 1];
+  for (std::size_t v = 0; v < n; ++v) {
+    around.first[v + 1] += around.first[v];
+    at.first[v + 1] += at.first[v];
+  }
+  around.items.resize(around.first[n]);
+  at.items.resize(at.first[n]);
+  std::vector<std::size_t> next_around(around.first.begin(), around.first.end() - 1),
+      next_at(at.first.begin(), at.first.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      around.items[next_around[tri[k]]++] = tri[(k + 1) % 3];
+      around.items[next_around[tri[k]]++] = tri[(k + 2) % 3];
+      at.items[next_at[tri[k]]++] = static_cast<Index>(t);
+    }
+  }
+  // Each neighbour once, packed.
+  Lists unique;
+  unique.first.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto begin = around.items.begin() + static_cast<std::ptrdiff_t>(around.first[v]);
+    const auto end = around.items.begin() + static_cast<std::ptrdiff_t>(around.first[v + 1]);
+    std::sort(begin, end);
+    const auto last = std::unique(begin, end);
+    unique.items.insert(unique.items.end(), begin, last);
+    unique.first[v + 1] = unique.items.size();
+  }
+  return {std::move(unique), std::move(at)};
+}
+
+// One thread's state for growing balls, reset by stamps rather than clears.
+struct Scratch {
+  std::vector<std::uint32_t> in_ball, reached;
+  std::vector<double> distance;
+  std::uint32_t stamp = 0;
+  std::vector<std::pair<double, Index>> heap;
+};
+
+// The radius at which the geodesic ball around `source` (Dijkstra along the edges) stops being a
+// disc for good, if it does within `radius`; -1 otherwise. Its Euler characteristic (the
+// triangles with every corner in it, their edges and vertices) is 1 while it is a disc; once it
+// falls to 0 or below, the ball takes in every vertex it has reached so far (a vertex whose
+// neighbours all came in first left a hole that closes then), and the fall counts if it lasts.
+double wrap_radius(const TriangleMesh& mesh, const Lists& around, const Lists& at, Index source,
+                   double radius, Scratch& s) {
+  const std::uint32_t stamp = ++s.stamp;
+  const auto greater = std::greater<std::pair<double, Index>>();
+  s.heap.assign(1, {0.0, source});
+  s.reached[source] = stamp;
+  s.distance[source] = 0;
+  long long euler = 0;
+  double wrapped = -1, settled = -1;  // where it fell, and how far it must hold
+  while (!s.heap.empty()) {
+    std::pop_heap(s.heap.begin(), s.heap.end(), greater);
+    const auto [d, w] = s.heap.back();
+    s.heap.pop_back();
+    if (s.in_ball[w] == stamp || d > s.distance[w]) continue;
+    if (wrapped >= 0 && d > settled) return wrapped;
+    if (wrapped < 0 && d > radius) return -1;
+    s.in_ball[w] = stamp;
+    ++euler;
+    for (const Index u : around.of(w)) {
+      if (s.in_ball[u] == stamp) {
+        --euler;
+        continue;
+      }
+      const double to_u = d + distance(mesh.vertices[w], mesh.vertices[u]);
+      if (s.reached[u] != stamp || to_u < s.distance[u]) {
+        s.reached[u] = stamp;
+        s.distance[u] = to_u;
+        s.heap.emplace_back(to_u, u);
+        std::push_heap(s.heap.begin(), s.heap.end(), greater);
+      }
+    }
+    for (const Index t : at.of(w)) {
+      const Triangle& tri = mesh.triangles[t];
+      if (std::all_of(tri.begin(), tri.end(), [&](Index v) { return s.in_ball[v] == stamp; }))
+        ++euler;
+    }
+    if (euler >= 1) {
+      wrapped = -1;
+    } else if (wrapped < 0) {
+      wrapped = d;
+      settled = d;
+      for (const auto& entry : s.heap) settled = std::max(settled, entry.first);
+    }
+  }
+  return wrapped;  // the whole part taken in, no disc
+}
+
+}  // namespace
+
+bool has_handles(const TriangleMesh& mesh) {
+  // Per vertex, the other ends of its triangles' edges, each as often as triangles have the edge
+  // (a counting sort by vertex, then each list sorted: no sort of all the edges).
+  const std::size_t n = mesh.vertices.size();
+  std::vector<std::size_t> first(n + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (const Index v : t) first[v + 1] += 2;
+  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  std::vector<Index> ends(first[n]);
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  UnionFind parts(n);
+  for (const Triangle& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      ends[next[t[k]]++] = t[(k + 1) % 3];
+      ends[next[t[k]]++] = t[(k + 2) % 3];
+    }
+    parts.unite(t[0], t[1]);
+    parts.unite(t[1], t[2]);
+  }
+  // Per vertex: its edges to higher ids, whether one has three or more triangles, and its
+  // boundary edges (one triangle) to higher ids.
+  std::vector<std::uint32_t> edges_up(n, 0);
+  std::vector<char> branching(n, 0);
+  std::vector<std::vector<Index>> boundary_up(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t v) {
+    const auto begin = ends.begin() + static_cast<std::ptrdiff_t>(first[v]);
+    const auto end = ends.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
+    std::sort(begin, end);
+    for (auto i = begin; i != end;) {
+      auto j = i + 1;
+      while (j != end && *j == *i) ++j;
+      if (j - i > 2) branching[v] = 1;
+      if (*i > v) {
+        ++edges_up[v];
+        if (j - i == 1) boundary_up[v].push_back(*i);
+      }
+      i = j;
+    }
+  });
+  if (std::any_of(branching.begin(), branching.end(), [](char b) { return b != 0; })) return false;
+  UnionFind loops(n);
+  std::vector<bool> on_boundary(n, false);
+  long long vertices = 0, edges = 0, components = 0, boundaries = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    edges += edges_up[v];
+    for (const Index u : boundary_up[v]) {
+      loops.unite(v, u);
+      on_boundary[v] = on_boundary[u] = true;
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    if (first[v + 1] == first[v]) continue;  // in no triangle
+    ++vertices;
+    components += parts.find(v) == v;
+    boundaries += on_boundary[v] && loops.find(v) == v;
+  }
+  // Twice the genus summed over the parts: 2 - χ - b each.
+  const long long euler = vertices - edges + static_cast<long long>(mesh.triangles.size());
+  return 2 * components - euler - boundaries > 0;
+}
+
+std::vector<double> handle_widths(const TriangleMesh& mesh, double reach) {
+  const std::size_t n = mesh.vertices.size();
+  std::vector<double> width(n, std::numeric_limits<double>::infinity());
+  if (!(reach > 0) || !std::isfinite(reach) || !has_handles(mesh)) return width;
+  // Named references, not a structured binding: lambdas below use them (Clang 14 cannot
+  // capture bindings).
+  const std::pair<Lists, Lists> lists = adjacency(mesh);
+  const Lists &around = lists.first, &at = lists.second;
+  // A loop around a handle of width w (its throat's diameter, were it round) is πw long; a ball
+  // wraps round it at half that radius.
+  const double radius = std::numbers::pi / 2 * reach;
+  tbb::enumerable_thread_specific<Scratch> scratch([n] {
+    Scratch s;
+    s.in_ball.assign(n, 0);
+    s.reached.assign(n, 0);
+    s.distance.assign(n, 0);
+    return s;
+  });
+  // First from one vertex per cell of a grid a quarter of the radius wide (the first by id), out
+  // to the radius and a cell's diagonal more: one of them lies that near any loop around a
+  // handle, and wraps round it. Then from every vertex within twice the radius of those that
+  // wrapped, each to its own loop.
+  const double cell = kProbeCell * radius;
+  std::map<std::array<std::int64_t, 3>, Index> first_in_cell;
+  for (Index v = 0; v < n; ++v) {
+    if (around.of(v).empty()) continue;
+    const Vec3& p = mesh.vertices[v];
+    first_in_cell.try_emplace({static_cast<std::int64_t>(std::floor(p.x / cell)),
+                               static_cast<std::int64_t>(std::floor(p.y / cell)),
+                               static_cast<std::int64_t>(std::floor(p.z / cell))},
+                              v);
+  }
+  std::vector<Index> probes;
+  for (const auto& [key, v] : first_in_cell) probes.push_back(v);
+  std::sort(probes.begin(), probes.end());
+  std::vector<char> wraps(probes.size(), 0);
+  const double probe_radius = radius + std::sqrt(3.0) * cell;
+  tbb::parallel_for(std::size_t{0}, probes.size(), [&](std::size_t i) {
+    wraps[i] = wrap_radius(mesh, around, at, probes[i], probe_radius, scratch.local()) >= 0;
+  });
+  std::vector<Vec3> near;
+  for (std::size_t i = 0; i < probes.size(); ++i)
+    if (wraps[i]) near.push_back(mesh.vertices[probes[i]]);
+  if (near.empty()) return width;
+  const PointTree tree(near);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t v) {
+    if (around.of(static_cast<Index>(v)).empty()) return;
+    const Vec3& p = mesh.vertices[v];
+    if (distance(p, near[tree(p)]) > 2 * radius) return;
+    // The loop through the vertex is about twice the radius where its ball wrapped.
+    const double r = wrap_radius(mesh, around, at, static_cast<Index>(v), radius, scratch.local());
+    if (r >= 0) width[v] = 2 * r / std::numbers::pi;
+  });
+  // Only the handle's throat, as only a hole's rim: a vertex whose own loop is much longer than
+  // one within its ball's radius (its loop runs to the throat and back) takes its size from the
+  // grading instead, which spreads it as the settings ask (that of every vertex's own loop grows
+  // a third of the distance, and took femur.off's whole count at 1k).
+  std::vector<Index> looped;
+  std::vector<Vec3> at_loops;
+  for (Index v = 0; v < n; ++v)
+    if (std::isfinite(width[v])) looped.push_back(v), at_loops.push_back(mesh.vertices[v]);
+  const PointTree loops(at_loops);
+  std::vector<double> throat(n, std::numeric_limits<double>::infinity());
+  tbb::parallel_for(std::size_t{0}, looped.size(), [&](std::size_t i) {
+    const Index v = looped[i];
+    const double r = std::numbers::pi / 2 * width[v];
+    std::vector<Index> found;
+    loops.within(mesh.vertices[v], r * r, found);
+    double thinnest = width[v];
+    for (const Index j : found) thinnest = std::min(thinnest, width[looped[j]]);
+    if (width[v] <= kThroat * thinnest) throat[v] = width[v];
+  });
+  return throat;
+}
+
+}  // namespace cvtmesh
