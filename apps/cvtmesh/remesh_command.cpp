@@ -221,9 +221,9 @@ void add_remesh_command(CLI::App& app, Action& run) {
                                  "a line, in vertex order, or a PLY with a vertex scalar");
   adaptive->excludes(sizing);
   cmd->add_option("--gap-gradation", o->settings.sizing.gap_gradation,
-                  "Even sizes only: edges grade down towards holes, slots and strips narrower "
-                  "than half an edge length, G or more edge lengths to double in size (0: even "
-                  "everywhere, slivers at such gaps)")
+                  "Even sizes only: edges grade down towards holes, slots, strips and handles "
+                  "narrower than half an edge length, G or more edge lengths to double in size "
+                  "(0: even everywhere, slivers at such gaps)")
       ->default_val(5)
       ->check(CLI::NonNegativeNumber)
       ->excludes(adaptive)

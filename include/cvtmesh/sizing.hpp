@@ -96,8 +96,9 @@ struct SizingSettings {
   double min_edge_length = 0, max_edge_length = 0;
   // With none of the three sources above (an even sizing): > 0 grades the lengths down to the
   // gaps under half of them across which feature curves face each other (capped_by_feature_gaps,
-  // wedges left out: a hole far smaller than an edge, a slot, a thin strip), changing by at most
-  // 1/gap_gradation per unit length; elsewhere they stay even. Small features force small
+  // wedges left out: a hole far smaller than an edge, a slot, a thin strip) and to handles as
+  // thin (a tunnel whose loop round is under π half-lengths: its loop over π), changing by at
+  // most 1/gap_gradation per unit length; elsewhere they stay even. Small features force small
   // triangles, as in quality meshers (Shewchuk's Triangle): the hole's short edges next to edges
   // of the even length make slivers (ChineseDragon-10kv.off, two holes 0.1-0.3% of an edge across:
   // θmin 0.2-4.4° at 1k-10k). Gentler than adaptive's 1.5: steeper grading cost 5-15° of θmin
