@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -35,42 +36,50 @@ struct Lists {
   }
 };
 
+// Per vertex, the other ends of its triangles' edges, sorted, each as often as triangles have the
+// edge: a counting sort by vertex, then each short list sorted (in parallel), no sort of all the
+// edges.
+Lists edge_ends(const TriangleMesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  Lists ends;
+  ends.first.assign(n + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (const Index v : t) ends.first[v + 1] += 2;
+  for (std::size_t v = 0; v < n; ++v) ends.first[v + 1] += ends.first[v];
+  ends.items.resize(ends.first[n]);
+  std::vector<std::size_t> next(ends.first.begin(), ends.first.end() - 1);
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      ends.items[next[t[k]]++] = t[(k + 1) % 3];
+      ends.items[next[t[k]]++] = t[(k + 2) % 3];
+    }
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t v) {
+    std::sort(ends.items.begin() + static_cast<std::ptrdiff_t>(ends.first[v]),
+              ends.items.begin() + static_cast<std::ptrdiff_t>(ends.first[v + 1]));
+  });
+  return ends;
+}
+
 // Per vertex, its neighbours along edges (sorted, each once) and the triangles at it.
 std::pair<Lists, Lists> adjacency(const TriangleMesh& mesh) {
   const std::size_t n = mesh.vertices.size();
+  const Lists ends = edge_ends(mesh);
   Lists around, at;
   around.first.assign(n + 1, 0);
+  for (Index v = 0; v < n; ++v) {
+    const std::span<const Index> all = ends.of(v);
+    std::unique_copy(all.begin(), all.end(), std::back_inserter(around.items));
+    around.first[v + 1] = around.items.size();
+  }
   at.first.assign(n + 1, 0);
   for (const Triangle& t : mesh.triangles)
-    for (const Index v : t) around.first[v + 1] += 2, ++at.first[v + 1];
-  for (std::size_t v = 0; v < n; ++v) {
-    around.first[v + 1] += around.first[v];
-    at.first[v + 1] += at.first[v];
-  }
-  around.items.resize(around.first[n]);
+    for (const Index v : t) ++at.first[v + 1];
+  for (std::size_t v = 0; v < n; ++v) at.first[v + 1] += at.first[v];
   at.items.resize(at.first[n]);
-  std::vector<std::size_t> next_around(around.first.begin(), around.first.end() - 1),
-      next_at(at.first.begin(), at.first.end() - 1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& tri = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      around.items[next_around[tri[k]]++] = tri[(k + 1) % 3];
-      around.items[next_around[tri[k]]++] = tri[(k + 2) % 3];
-      at.items[next_at[tri[k]]++] = static_cast<Index>(t);
-    }
-  }
-  // Each neighbour once, packed.
-  Lists unique;
-  unique.first.assign(n + 1, 0);
-  for (std::size_t v = 0; v < n; ++v) {
-    const auto begin = around.items.begin() + static_cast<std::ptrdiff_t>(around.first[v]);
-    const auto end = around.items.begin() + static_cast<std::ptrdiff_t>(around.first[v + 1]);
-    std::sort(begin, end);
-    const auto last = std::unique(begin, end);
-    unique.items.insert(unique.items.end(), begin, last);
-    unique.first[v + 1] = unique.items.size();
-  }
-  return {std::move(unique), std::move(at)};
+  std::vector<std::size_t> next(at.first.begin(), at.first.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (const Index v : mesh.triangles[t]) at.items[next[v]++] = static_cast<Index>(t);
+  return {std::move(around), std::move(at)};
 }
 
 // One thread's state for growing balls, reset by stamps rather than clears.
@@ -136,57 +145,32 @@ double wrap_radius(const TriangleMesh& mesh, const Lists& around, const Lists& a
 }  // namespace
 
 bool has_handles(const TriangleMesh& mesh) {
-  // Per vertex, the other ends of its triangles' edges, each as often as triangles have the edge
-  // (a counting sort by vertex, then each list sorted: no sort of all the edges).
   const std::size_t n = mesh.vertices.size();
-  std::vector<std::size_t> first(n + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (const Index v : t) first[v + 1] += 2;
-  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  std::vector<Index> ends(first[n]);
-  std::vector<std::size_t> next(first.begin(), first.end() - 1);
-  UnionFind parts(n);
+  const Lists ends = edge_ends(mesh);
+  UnionFind parts(n), loops(n);
   for (const Triangle& t : mesh.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      ends[next[t[k]]++] = t[(k + 1) % 3];
-      ends[next[t[k]]++] = t[(k + 2) % 3];
-    }
     parts.unite(t[0], t[1]);
     parts.unite(t[1], t[2]);
   }
-  // Per vertex: its edges to higher ids, whether one has three or more triangles, and its
-  // boundary edges (one triangle) to higher ids.
-  std::vector<std::uint32_t> edges_up(n, 0);
-  std::vector<char> branching(n, 0);
-  std::vector<std::vector<Index>> boundary_up(n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t v) {
-    const auto begin = ends.begin() + static_cast<std::ptrdiff_t>(first[v]);
-    const auto end = ends.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
-    std::sort(begin, end);
-    for (auto i = begin; i != end;) {
-      auto j = i + 1;
-      while (j != end && *j == *i) ++j;
-      if (j - i > 2) branching[v] = 1;
-      if (*i > v) {
-        ++edges_up[v];
-        if (j - i == 1) boundary_up[v].push_back(*i);
+  std::vector<bool> on_boundary(n, false);
+  long long vertices = 0, edges = 0, components = 0, boundaries = 0;
+  for (Index v = 0; v < n; ++v) {
+    const std::span<const Index> all = ends.of(v);
+    for (auto i = all.begin(); i != all.end();) {
+      const auto j = std::find_if(i, all.end(), [&](Index u) { return u != *i; });
+      if (j - i > 2) return false;  // an edge of three or more triangles: no surface there
+      if (*i > v) {                 // each edge once, from its lower end
+        ++edges;
+        if (j - i == 1) {
+          loops.unite(v, *i);
+          on_boundary[v] = on_boundary[*i] = true;
+        }
       }
       i = j;
     }
-  });
-  if (std::any_of(branching.begin(), branching.end(), [](char b) { return b != 0; })) return false;
-  UnionFind loops(n);
-  std::vector<bool> on_boundary(n, false);
-  long long vertices = 0, edges = 0, components = 0, boundaries = 0;
-  for (std::size_t v = 0; v < n; ++v) {
-    edges += edges_up[v];
-    for (const Index u : boundary_up[v]) {
-      loops.unite(v, u);
-      on_boundary[v] = on_boundary[u] = true;
-    }
   }
-  for (std::size_t v = 0; v < n; ++v) {
-    if (first[v + 1] == first[v]) continue;  // in no triangle
+  for (Index v = 0; v < n; ++v) {
+    if (ends.of(v).empty()) continue;  // in no triangle
     ++vertices;
     components += parts.find(v) == v;
     boundaries += on_boundary[v] && loops.find(v) == v;
