@@ -62,6 +62,30 @@ TEST(Interrupt, CancelThrowsFromEveryStageAndStopsPromptly) {
   }
 }
 
+// Parts remeshed side by side (remesh/by_component): a cancel stops every part, each throws on
+// its own, and the remesh throws Cancelled once all have stopped; none is left running with loops
+// that an exception from another cut short (the sanitized build checks what they would read).
+TEST(Interrupt, CancelStopsPartsRemeshedSideBySide) {
+  TriangleMesh input = icosphere(3);
+  for (int k = 1; k <= 3; ++k)
+    input = concatenate(input, transformed(torus(1, 0.4, 64, 24), 1, {4.0 * k, 0, 0}));
+  RemeshSettings s;
+  s.vertices = 1200;
+  long total = 0;
+  {
+    std::atomic<long> polls{0};
+    s.cancel = [&] { return ++polls, false; };
+    remesh(input, s);
+    total = polls.load();
+  }
+  ASSERT_GT(total, 100);
+  for (const long after : {1L, total / 4, total / 2, total - 1}) {
+    CancelAfter cancel(after);
+    s.cancel = [&] { return cancel(); };
+    EXPECT_THROW(remesh(input, s), Cancelled) << "after " << after << " of " << total;
+  }
+}
+
 TEST(Interrupt, TimeLimitGivesAValidOutputOfTheSeedsAsTheyAre) {
   const TriangleMesh input = torus(1, 0.4, 160, 64);
   RemeshSettings s;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -621,6 +622,10 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return parts[a].mesh.triangles.size() > parts[b].mesh.triangles.size();
   });
+  // A part that throws lets the others run to their end: an exception leaving the loop would
+  // cancel the parallel work inside the others, whose loops would then return half done. The
+  // first part's error, in part order, is the one thrown (the same whatever the timing).
+  std::vector<std::exception_ptr> failed(parts.size());
   const auto parts_start = std::chrono::steady_clock::now();
   tbb::parallel_for_each(order.begin(), order.end(), [&](std::size_t c) {
     RemeshSettings& s = part_settings[c];
@@ -629,12 +634,18 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
       // seeds as sampled make its output), as the whole would.
       s.time_limit = std::max(settings.time_limit - seconds_since(start), 1e-9);
     }
-    if (as_it_is(parts[c]))
-      remeshed[c].result.mesh = parts[c].mesh;
-    else
-      tbb::this_task_arena::isolate(
-          [&] { remeshed[c] = remesh_unit_topology_first(parts[c].mesh, s); });
+    try {
+      if (as_it_is(parts[c]))
+        remeshed[c].result.mesh = parts[c].mesh;
+      else
+        tbb::this_task_arena::isolate(
+            [&] { remeshed[c] = remesh_unit_topology_first(parts[c].mesh, s); });
+    } catch (...) {
+      failed[c] = std::current_exception();
+    }
   });
+  for (const std::exception_ptr& error : failed)
+    if (error) std::rethrow_exception(error);
   const double parts_seconds = seconds_since(parts_start);
   for (std::size_t c = 0; c < parts.size(); ++c) {
     UnitRemesh& part = remeshed[c];
