@@ -26,6 +26,8 @@ constexpr double kProbeCell = 0.25;
 // A vertex is on a handle's throat where its loop is at most this many times the thinnest loop
 // within its ball's radius.
 constexpr double kThroat = 1.5;
+// The most grid cells of the coarse search from the origin along an axis.
+constexpr double kFinestCells = 1e9;
 
 // Compressed per-vertex lists: list v is items[first[v]] to items[first[v + 1]].
 struct Lists {
@@ -203,6 +205,13 @@ std::vector<double> handle_widths(const TriangleMesh& mesh, double reach) {
   // handle, and wraps round it. Then from every vertex within twice the radius of those that
   // wrapped, each to its own loop.
   const double cell = kProbeCell * radius;
+  // Cells numbered in 64 bits: none is looked for at a scale a billionth of the mesh's or finer
+  // (the remesher's copy is about unit size, and its reach a share of an edge).
+  const BoundingBox box = bounding_box(mesh);
+  if (!(std::max({std::abs(box.min.x), std::abs(box.min.y), std::abs(box.min.z),
+                  std::abs(box.max.x), std::abs(box.max.y), std::abs(box.max.z)}) <
+        kFinestCells * cell))
+    return width;
   std::map<std::array<std::int64_t, 3>, Index> first_in_cell;
   for (Index v = 0; v < n; ++v) {
     if (around.of(v).empty()) continue;
