@@ -27,6 +27,10 @@ constexpr double kMostGradedShare = 0.1;
 // Lengths narrow to feature gaps and holes down to this share of the even (or, adaptive, the
 // median) length, no further.
 constexpr double kGapFloor = 1e-3;
+// An even sizing grades down to gaps (and handles) under half its length only: at wider ones the
+// even output does as well (narrowing to gaps under the length itself cost stanford-bunny.obj at
+// 5k and blade.off at 5k 5-17° of θmin on the corpus).
+constexpr double kEvenGapReach = 0.5;
 constexpr double kGentler = 0.75;
 constexpr int kGentlerSteps = 8;
 
@@ -120,14 +124,10 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
 // scaled by k (the count's factor moves little from its first estimate, and a wider gap is no
 // narrow place), an even one's under half its length, where handles thinner than that narrow it
 // too; and an adaptive sizing's holes and handles under its clamp (raw.hole).
-bool add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
-                      const SizingSettings& s, RawSizes& raw, bool handles) {
+void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double k,
+                      const SizingSettings& s, RawSizes& raw) {
   constexpr double kGapReach = 3;
-  // An even sizing grades down to gaps under half its length only: at wider ones the even
-  // output does as well (narrowing to gaps under the length itself cost stanford-bunny.obj at
-  // 5k and blade.off at 5k 5-17° of θmin on the corpus).
-  constexpr double kEvenGapReach = 0.5;
-  if (s.active() && !(s.adaptive > 0)) return false;
+  if (s.active() && !(s.adaptive > 0)) return;
   const bool adaptive = s.adaptive > 0;
   const std::size_t n = raw.h.size();
   raw.gap.assign(n, std::numeric_limits<double>::infinity());
@@ -140,30 +140,34 @@ bool add_feature_gaps(const TriangleMesh& mesh, const Features* features, double
     for (std::size_t v = 0; v < n; ++v)
       if (capped[v] < limit[v]) raw.gap[v] = capped[v];
   }
-  bool handled = false;  // whether a handle narrows a size
-  if (!adaptive) {
-    // Even lengths (raw.h is 1): a handle is as narrow a place as a gap.
-    if (handles)
-      for (std::size_t v = 0; const double w : handle_widths(mesh, kEvenGapReach * k)) {
-        handled |= w < raw.gap[v];
-        raw.gap[v] = std::min(raw.gap[v], w);
-        ++v;
-      }
-    return handled;
-  }
+  if (!adaptive) return;
   const double under = raw.floor * k;
   std::vector<double> capped_at_holes(n, under);
   cap_at_small_holes(mesh, capped_at_holes);
-  if (handles)
-    for (std::size_t v = 0; const double w : handle_widths(mesh, under)) {
-      handled |= w < capped_at_holes[v];
-      capped_at_holes[v] = std::min(capped_at_holes[v], w);
-      ++v;
-    }
   raw.hole.assign(n, std::numeric_limits<double>::infinity());
   for (std::size_t v = 0; v < n; ++v)
     if (capped_at_holes[v] < under) raw.hole[v] = capped_at_holes[v];
-  return handled;
+}
+
+// The handles as thin as the narrow places add_feature_gaps looks for (handle_widths): an even
+// sizing's under half its length, into raw.gap (raw.h is 1); an adaptive one's under its clamp,
+// into raw.hole. Returns `raw` as it was where a handle narrows a size, to go back to.
+std::optional<RawSizes> add_handle_caps(const TriangleMesh& mesh, double k, const SizingSettings& s,
+                                        RawSizes& raw) {
+  if (s.active() && !(s.adaptive > 0)) return std::nullopt;
+  const bool adaptive = s.adaptive > 0;
+  const double reach = adaptive ? raw.floor * k : kEvenGapReach * k;
+  const std::vector<double> widths = handle_widths(mesh, reach);
+  std::vector<double>& caps = adaptive ? raw.hole : raw.gap;
+  // An adaptive sizing's hole caps hold under its clamp only (RawSizes::hole).
+  const double under = adaptive ? reach : std::numeric_limits<double>::infinity();
+  std::optional<RawSizes> before;
+  for (std::size_t v = 0; v < widths.size(); ++v)
+    if (widths[v] < std::min(caps[v], under)) {
+      if (!before) before = raw;
+      caps[v] = widths[v];
+    }
+  return before;
 }
 
 // Whether an adaptive sizing narrows to a hole under its clamp (RawSizes::hole).
@@ -341,7 +345,8 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
       throw InvalidArgument("the edge length must be positive");
     if (length > 0) k = length / area_median(mesh, h.h);
   }
-  const bool handled = add_feature_gaps(mesh, features, k, s, h, true);
+  add_feature_gaps(mesh, features, k, s, h);
+  std::optional<RawSizes> without_handles = add_handle_caps(mesh, k, s, h);
   if (gaps_only && no_gap(h)) return std::nullopt;
   // The field at gradation `g` (for an even sizing; the settings' otherwise), on `mesh` split
   // for it into `storage` where the lengths change fast, with `moved` (the features) moved
@@ -391,9 +396,8 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     // Handles whose grading takes too many even at the steepest gradation are left to topology
     // control's rounds (femur.off at 1k: two handles a thirtieth of the edge length round took
     // a fifth of the count at a gradation of 1, the rounds then 2.4 times as long).
-    if (handled) {
-      h = raw_sizes(mesh, new_id, settings);
-      add_feature_gaps(mesh, features, k, s, h, false);
+    if (without_handles) {
+      h = std::move(*without_handles);
       if (no_gap(h)) {
         storage.reset();  // the tries above split the mesh for sizes that are gone
         return std::nullopt;

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "geometry/point_tree.hpp"
+#include "geometry/triangles_around.hpp"
 #include "geometry/union_find.hpp"
 
 namespace cvtmesh {
@@ -62,26 +63,17 @@ Lists edge_ends(const TriangleMesh& mesh) {
   return ends;
 }
 
-// Per vertex, its neighbours along edges (sorted, each once) and the triangles at it.
-std::pair<Lists, Lists> adjacency(const TriangleMesh& mesh) {
-  const std::size_t n = mesh.vertices.size();
+// Per vertex, its neighbours along edges (sorted, each once).
+Lists neighbours(const TriangleMesh& mesh) {
   const Lists ends = edge_ends(mesh);
-  Lists around, at;
-  around.first.assign(n + 1, 0);
-  for (Index v = 0; v < n; ++v) {
+  Lists around;
+  around.first.assign(mesh.vertices.size() + 1, 0);
+  for (Index v = 0; v < mesh.vertices.size(); ++v) {
     const std::span<const Index> all = ends.of(v);
     std::unique_copy(all.begin(), all.end(), std::back_inserter(around.items));
     around.first[v + 1] = around.items.size();
   }
-  at.first.assign(n + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (const Index v : t) ++at.first[v + 1];
-  for (std::size_t v = 0; v < n; ++v) at.first[v + 1] += at.first[v];
-  at.items.resize(at.first[n]);
-  std::vector<std::size_t> next(at.first.begin(), at.first.end() - 1);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const Index v : mesh.triangles[t]) at.items[next[v]++] = static_cast<Index>(t);
-  return {std::move(around), std::move(at)};
+  return around;
 }
 
 // One thread's state for growing balls, reset by stamps rather than clears.
@@ -97,8 +89,9 @@ struct Scratch {
 // triangles with every corner in it, their edges and vertices) is 1 while it is a disc; once it
 // falls to 0 or below, the ball takes in every vertex it has reached so far (a vertex whose
 // neighbours all came in first left a hole that closes then), and the fall counts if it lasts.
-double wrap_radius(const TriangleMesh& mesh, const Lists& around, const Lists& at, Index source,
-                   double radius, Scratch& s) {
+double wrap_radius(const TriangleMesh& mesh, const Lists& around,
+                   const std::vector<std::vector<Index>>& at, Index source, double radius,
+                   Scratch& s) {
   const std::uint32_t stamp = ++s.stamp;
   const auto greater = std::greater<std::pair<double, Index>>();
   s.heap.assign(1, {0.0, source});
@@ -128,7 +121,7 @@ double wrap_radius(const TriangleMesh& mesh, const Lists& around, const Lists& a
         std::push_heap(s.heap.begin(), s.heap.end(), greater);
       }
     }
-    for (const Index t : at.of(w)) {
+    for (const Index t : at[w]) {
       const Triangle& tri = mesh.triangles[t];
       if (std::all_of(tri.begin(), tri.end(), [&](Index v) { return s.in_ball[v] == stamp; }))
         ++euler;
@@ -186,10 +179,8 @@ std::vector<double> handle_widths(const TriangleMesh& mesh, double reach) {
   const std::size_t n = mesh.vertices.size();
   std::vector<double> width(n, std::numeric_limits<double>::infinity());
   if (!(reach > 0) || !std::isfinite(reach) || !has_handles(mesh)) return width;
-  // Named references, not a structured binding: lambdas below use them (Clang 14 cannot
-  // capture bindings).
-  const std::pair<Lists, Lists> lists = adjacency(mesh);
-  const Lists &around = lists.first, &at = lists.second;
+  const Lists around = neighbours(mesh);
+  const std::vector<std::vector<Index>> at = triangles_around(mesh);
   // A loop around a handle of width w (its throat's diameter, were it round) is πw long; a ball
   // wraps round it at half that radius.
   const double radius = std::numbers::pi / 2 * reach;

@@ -6,8 +6,6 @@
 
 namespace cvtmesh {
 
-// Each of `chunked` (one vector per chunk) sized to the chunks of `kept`, and the chunks not kept
-// emptied: what a sink holds of those comes again.
 // Whether every chunk is kept: what a sink holds is as it was.
 inline bool all_kept(const std::vector<char>& kept) {
   for (const char k : kept)
@@ -15,6 +13,8 @@ inline bool all_kept(const std::vector<char>& kept) {
   return true;
 }
 
+// Each of `chunked` (one vector per chunk) sized to the chunks of `kept`, and the chunks not kept
+// emptied: what a sink holds of those comes again.
 template <class... Chunked>
 void keep_only(const std::vector<char>& kept, Chunked&... chunked) {
   (chunked.resize(kept.size()), ...);
