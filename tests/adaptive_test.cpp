@@ -229,6 +229,30 @@ TEST(Adaptive, GradationBoundsNeighbouringTargetLengths) {
   EXPECT_GT(steepest(0.01), 1 / 6.0);
 }
 
+TEST(Adaptive, ThinPartsKeepPiEdgesRoundTheirSection) {
+  // At 150 vertices, edges ∝ √lfs alone would be about 0.18 long at the waist, whose radius and
+  // local feature size are 0.08: 2.8 edges round it. Capped at twice the local feature size,
+  // they keep π edges round it; the bulbs' edges are three times as long.
+  const TriangleMesh shape = dumbbell(0.08, 160, 96);
+  std::vector<Index> same(shape.vertices.size());
+  for (Index v = 0; v < same.size(); ++v) same[v] = v;
+  RemeshSettings s;
+  s.vertices = 150;
+  s.sizing.adaptive = 1.5;
+  const std::optional<SizeField> field = make_size_field(shape, same, s);
+  ASSERT_TRUE(field.has_value());
+  const std::vector<double> lfs = local_feature_size(shape, {0, s.seed, 0});
+  double waist = 0, bulbs = 0;
+  for (Index v = 0; v < shape.vertices.size(); ++v) {
+    if (std::abs(shape.vertices[v].z) < 0.05) {
+      EXPECT_LE(field->at_vertex(v), 2 * lfs[v] * (1 + 1e-9));
+      waist = std::max(waist, field->at_vertex(v));
+    }
+    if (std::abs(shape.vertices[v].z) > 1) bulbs = std::max(bulbs, field->at_vertex(v));
+  }
+  EXPECT_GT(bulbs, 3 * waist);
+}
+
 TEST(Adaptive, SizesFromAFile) {
   const TempDir dir;
   const TriangleMesh sphere = icosphere(2);

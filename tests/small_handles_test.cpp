@@ -112,6 +112,27 @@ TEST(SmallHandles, EvenSizesNarrowToANeckUnlessItsGradingTakesTooMany) {
   EXPECT_FALSE(split.has_value());
 }
 
+TEST(SmallHandles, AdaptiveSizesKeepSixEdgesRoundANeckAsRoundAHole) {
+  // Even sizes cap a throat at its width (π edges round it), adaptive ones at half of it (six
+  // edges round it, as cap_at_small_holes does round a hole): the neck is 0.04 across.
+  const TriangleMesh necked = necked_torus(0.3, 0.02, 240, 24);
+  std::vector<Index> same(necked.vertices.size());
+  std::iota(same.begin(), same.end(), Index{0});
+  RemeshSettings s;
+  s.vertices = 400;
+  s.sizing.adaptive = 1.5;
+  const std::optional<SizeField> field = make_size_field(necked, same, s);
+  ASSERT_TRUE(field.has_value());
+  const std::vector<double> width = handle_widths(necked, 0.2);
+  double at_neck = INFINITY;
+  for (Index v = 0; v < necked.vertices.size(); ++v)
+    if (std::isfinite(width[v])) {
+      EXPECT_LE(field->at_vertex(v), width[v] / 2 * (1 + 1e-9)) << "vertex " << v;
+      at_neck = std::min(at_neck, field->at_vertex(v));
+    }
+  EXPECT_GT(at_neck, 0.9 * 0.02);
+}
+
 TEST(SmallHandles, ANeckThinnerThanTheEdgesGetsItsCellsFromTheStart) {
   // At 400 vertices the edges are about 0.18 long, and the neck 0.04 across: the even sizes
   // grade down to it, so the first extraction keeps the handle and topology control adds no

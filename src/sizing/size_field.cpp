@@ -33,6 +33,18 @@ constexpr double kGapFloor = 1e-3;
 constexpr double kEvenGapReach = 0.5;
 constexpr double kGentler = 0.75;
 constexpr int kGentlerSteps = 8;
+// An adaptive length is at most this many times the (clamped) local feature size: a limb of
+// radius r, whose lfs is r, then keeps π edges round its section, as an even sizing keeps across
+// a gap or round a handle. √lfs alone left thin parts under three edges round at low counts, and
+// topology control mended them seed by seed (the corpus at 2k, seed 1: 311 seeds added, 223
+// with this cap; camel.off's tail, 0.013 thick under edges of 0.016, took 49, 36 with it).
+constexpr double kLengthsPerLfs = 2;
+// The most of the count that those caps, and six edges round an adaptive sizing's thin handles
+// (add_handle_caps), may take from the rest of the surface; where they would take more, the count
+// is too low for them and the sizes go without. femur.off's throats took a third at 2k (seeds
+// added 129 → 28, θmin 32.5° → 36.0°, Hausdorff mean 0.053% → 0.063%); at 1k three fifths (θmin
+// 37.8° → 23.2°), and bull.off's thin parts three quarters (Hausdorff max 1.0% → 2.4%).
+constexpr double kMostCappedShare = 0.4;
 
 // Seeds per unit area for edges of length h: equilateral triangles, two per vertex.
 double seeds_per_area(double h) {
@@ -76,6 +88,11 @@ struct RawSizes {
   // 2k or 5k.
   std::vector<double> hole;
   double hole_floor = 0;
+  // Adaptive: per vertex, the local feature size as clamped (0 where the vertex has no area),
+  // for the thin parts' caps: kLengthsPerLfs times it, in mesh units, held down to `floor` as the
+  // gaps are, added once the lengths' scale is first estimated (add_thin_part_caps).
+  std::vector<double> lfs;
+  std::vector<double> thin;
 };
 
 RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
@@ -84,7 +101,7 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
   const int sources = (s.adaptive > 0) + !s.edge_lengths.empty() + (s.edge_length_at != nullptr);
   if (sources == 0) {
     // Even lengths, graded down at the feature gaps only; no shorter than kGapFloor of them.
-    return {std::vector<double>(mesh.vertices.size(), 1.0), {}, kGapFloor, {}, 0};
+    return {std::vector<double>(mesh.vertices.size(), 1.0), {}, kGapFloor, {}, 0, {}, {}};
   }
   if (sources != 1)
     throw InvalidArgument("give one sizing: adaptive, per-vertex edge lengths, or a function");
@@ -96,10 +113,14 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
     const double median = area_median(mesh, lfs);
     // ρ = 1/lfs² (§4.1): seeds ∝ √ρ = 1/lfs per area, edges ∝ √lfs. Where lfs is the radius of
     // curvature, that spreads the chord error h²/(8 lfs) evenly over the surface.
-    for (double& x : lfs)
-      if (x > 0)
-        x = std::sqrt(std::clamp(x, median / s.adaptive_range, median * s.adaptive_range) * median);
-    return {std::move(lfs), {}, median / std::sqrt(s.adaptive_range), {}, kGapFloor * median};
+    std::vector<double> h(lfs.size(), 0);
+    for (std::size_t v = 0; v < lfs.size(); ++v)
+      if (lfs[v] > 0) {
+        lfs[v] = std::clamp(lfs[v], median / s.adaptive_range, median * s.adaptive_range);
+        h[v] = std::sqrt(lfs[v] * median);
+      }
+    return {std::move(h),   {}, median / std::sqrt(s.adaptive_range), {}, kGapFloor * median,
+            std::move(lfs), {}};
   }
   std::vector<double> h(mesh.vertices.size(), 0);
   if (!s.edge_lengths.empty()) {
@@ -117,7 +138,7 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
       throw InvalidArgument("the target edge length at vertex " + std::to_string(v) + " is " +
                             std::to_string(length) + "; it must be positive and finite");
   }
-  return {std::move(h), {}, 0, {}, 0};
+  return {std::move(h), {}, 0, {}, 0, {}, {}};
 }
 
 // The feature gaps (raw.gap): an adaptive sizing's looked for under a few times the lengths
@@ -149,23 +170,34 @@ void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double
     if (capped_at_holes[v] < under) raw.hole[v] = capped_at_holes[v];
 }
 
-// The handles as thin as the narrow places add_feature_gaps looks for (handle_widths): an even
-// sizing's under half its length, into raw.gap (raw.h is 1); an adaptive one's under its clamp,
-// into raw.hole. Returns `raw` as it was where a handle narrows a size, to go back to.
-std::optional<RawSizes> add_handle_caps(const TriangleMesh& mesh, double k, const SizingSettings& s,
-                                        RawSizes& raw) {
-  if (s.active() && !(s.adaptive > 0)) return std::nullopt;
+// An adaptive sizing's caps at thin parts (RawSizes::thin).
+void add_thin_part_caps(RawSizes& raw) {
+  raw.thin.assign(raw.lfs.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t v = 0; v < raw.lfs.size(); ++v)
+    if (raw.lfs[v] > 0) raw.thin[v] = kLengthsPerLfs * raw.lfs[v];
+}
+
+// The widths of the handles as thin as the narrow places add_feature_gaps looks for
+// (handle_widths): an even sizing's under half its length, an adaptive one's under its clamp.
+std::vector<double> thin_handles(const TriangleMesh& mesh, double k, const SizingSettings& s,
+                                 const RawSizes& raw) {
+  if (s.active() && !(s.adaptive > 0)) return {};
+  return handle_widths(mesh, s.adaptive > 0 ? raw.floor * k : kEvenGapReach * k);
+}
+
+// The thin handles' caps (thin_handles' `widths`), `per_width` times their widths: an even
+// sizing's into raw.gap (raw.h is 1), an adaptive one's where under its clamp into raw.hole, as
+// a hole's. Returns `raw` as it was where a handle narrows a size, to go back to.
+std::optional<RawSizes> add_handle_caps(const std::vector<double>& widths, double per_width,
+                                        double k, const SizingSettings& s, RawSizes& raw) {
   const bool adaptive = s.adaptive > 0;
-  const double reach = adaptive ? raw.floor * k : kEvenGapReach * k;
-  const std::vector<double> widths = handle_widths(mesh, reach);
+  const double under = adaptive ? raw.floor * k : std::numeric_limits<double>::infinity();
   std::vector<double>& caps = adaptive ? raw.hole : raw.gap;
-  // An adaptive sizing's hole caps hold under its clamp only (RawSizes::hole).
-  const double under = adaptive ? reach : std::numeric_limits<double>::infinity();
   std::optional<RawSizes> before;
   for (std::size_t v = 0; v < widths.size(); ++v)
-    if (widths[v] < std::min(caps[v], under)) {
+    if (const double cap = per_width * widths[v]; cap < std::min(caps[v], under)) {
       if (!before) before = raw;
-      caps[v] = widths[v];
+      caps[v] = cap;
     }
   return before;
 }
@@ -212,6 +244,9 @@ std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
   if (!raw.gap.empty())
     for (std::size_t v = 0; v < raw.h.size(); ++v)
       if (used[v]) out[v] = std::min(out[v], std::max(raw.gap[v], raw.floor * k));
+  if (!raw.thin.empty())
+    for (std::size_t v = 0; v < raw.h.size(); ++v)
+      if (used[v]) out[v] = std::min(out[v], std::max(raw.thin[v], raw.floor * k));
   if (!raw.hole.empty())
     for (std::size_t v = 0; v < raw.h.size(); ++v)
       if (used[v]) out[v] = std::min(out[v], std::max(raw.hole[v], raw.hole_floor * k));
@@ -225,6 +260,15 @@ std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
   return out;
 }
 
+// The share of the count that the sizes `capped` take from the rest of the surface against
+// `plain` at the lengths' scale `k`: that of their vertices that `plain` would not ask for.
+double capped_share(const TriangleMesh& mesh, const RawSizes& plain, const RawSizes& capped,
+                    const SizingSettings& s, double k) {
+  const std::vector<bool> used = used_vertices(mesh);
+  return 1 - SizeField(mesh, scaled_sizes(mesh, plain, used, k, s)).vertex_count() /
+                 SizeField(mesh, scaled_sizes(mesh, capped, used, k, s)).vertex_count();
+}
+
 // The field of lengths scaled from `k` to the count `vertices` asks for (0: k as it is). One
 // factor k for the count. Without clamps or grading the count goes as k⁻²; they only flatten
 // that (grading shortens the long lengths more, clamps hold lengths still), so log count falls
@@ -232,7 +276,10 @@ std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
 // the clamps flatten it so much that the steps crawl, bisection on log k finishes (a count the
 // clamps cannot reach gets the nearest).
 SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettings& s, double k,
-                 std::size_t vertices) {
+                 std::size_t vertices, double* scale = nullptr) {
+  double unused = 0;
+  double& found = scale ? *scale : unused;
+  found = k;
   const std::vector<bool> used = used_vertices(mesh);
   if (vertices == 0) return SizeField(mesh, scaled_sizes(mesh, h, used, k, s));
   // Each trial scale grades a field on the same mesh (ChineseDragon-10kv.off at 1k: 236 of them,
@@ -243,7 +290,7 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
   // The field of a k that reaches the count within 0.1% is returned as it is: not graded again.
   const auto reached = [&](double c) { return std::abs(c / n - 1) < 1e-3; };
   for (int step = 0; step < 12; ++step) {
-    SizeField field(mesh, sizes_at(k));
+    SizeField field(mesh, sizes_at(found = k));
     const double c = field.vertex_count();
     if (reached(c)) return field;
     k *= std::sqrt(c / n);
@@ -253,12 +300,12 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
   double lo = std::log(k) - 20, hi = std::log(k) + 20;
   for (int step = 0; step < 60; ++step) {
     const double mid = (lo + hi) / 2;
-    SizeField field(mesh, sizes_at(std::exp(mid)));
+    SizeField field(mesh, sizes_at(found = std::exp(mid)));
     const double c = field.vertex_count();
     if (reached(c)) return field;
     (c > n ? lo : hi) = mid;
   }
-  return SizeField(mesh, sizes_at(std::exp((lo + hi) / 2)));
+  return SizeField(mesh, sizes_at(found = std::exp((lo + hi) / 2)));
 }
 
 }  // namespace
@@ -346,12 +393,30 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     if (length > 0) k = length / area_median(mesh, h.h);
   }
   add_feature_gaps(mesh, features, k, s, h);
-  std::optional<RawSizes> without_handles = add_handle_caps(mesh, k, s, h);
+  const std::vector<double> handles = thin_handles(mesh, k, s, h);
+  // An adaptive sizing's thin parts and handles: the sizes without the thin parts' caps and with
+  // π edges round the throats, as an even sizing's, to go back to where the caps take too many
+  // (kMostCappedShare); with them and six edges round the throats, as round a hole
+  // (cap_at_small_holes). With π edges, the thin parts' caps around femur.off's throats at 2k
+  // (seeds 1-3) left 94, 81 and 105 seeds to add; with six, 28, 9 and 25 (129, 71 and 75 with
+  // neither cap; six edges without the thin parts' caps, 234 at seed 1).
+  std::optional<RawSizes> plain;
+  if (s.adaptive > 0) {
+    plain = h;
+    add_handle_caps(handles, 1.0, k, s, *plain);
+    add_thin_part_caps(h);
+  }
+  // An even sizing keeps π edges round a throat: at six, femur's grading took more than a tenth
+  // of the count at 2k, the handles went to topology control, and it added 674 seeds, not 169.
+  std::optional<RawSizes> without_handles =
+      add_handle_caps(handles, s.adaptive > 0 ? 0.5 : 1.0, k, s, h);
   if (gaps_only && no_gap(h)) return std::nullopt;
   // The field at gradation `g` (for an even sizing; the settings' otherwise), on `mesh` split
   // for it into `storage` where the lengths change fast, with `moved` (the features) moved
   // onto it.
-  const auto field_at = [&](double g, std::optional<TriangleMesh>& storage, Features* moved) {
+  // `scale`: where given, set to the lengths' scale that reaches the count.
+  const auto field_at = [&](double g, std::optional<TriangleMesh>& storage, Features* moved,
+                            double* scale = nullptr) {
     SizingSettings at = s;
     if (gaps_only) at.gap_gradation = g;
     if (split_mesh && (gaps_only || narrows_to_holes(h))) {
@@ -363,14 +428,15 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
           on_split.h.push_back((on_split.h[e[0]] + on_split.h[e[1]]) / 2);
           if (!h.gap.empty()) on_split.gap.push_back(std::numeric_limits<double>::infinity());
           if (!h.hole.empty()) on_split.hole.push_back(std::numeric_limits<double>::infinity());
+          if (!h.thin.empty()) on_split.thin.push_back(std::numeric_limits<double>::infinity());
         }
         if (moved) *moved = split_features(*moved, *split, mesh.vertices.size());
         storage = std::move(split->mesh);
-        return fitted(*storage, on_split, at, k, vertices);
+        return fitted(*storage, on_split, at, k, vertices, scale);
       }
     }
     storage.reset();
-    return fitted(mesh, h, at, k, vertices);
+    return fitted(mesh, h, at, k, vertices, scale);
   };
   double g = gradation_of(s);
   std::optional<TriangleMesh> scratch;  // never split into: only with split_mesh
@@ -404,6 +470,16 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
       }
       if (std::optional<SizeField> field = gentle_enough()) return field;
     }
+  }
+  if (plain && vertices > 0) {
+    Features moved = features ? *features : Features{};
+    double scale = 0;
+    SizeField field = field_at(g, storage, features ? &moved : nullptr, &scale);
+    if (capped_share(mesh, *plain, h, s, scale) <= kMostCappedShare) {
+      if (features) *features = std::move(moved);
+      return field;
+    }
+    h = std::move(*plain);
   }
   return field_at(g, storage, features);
 }
