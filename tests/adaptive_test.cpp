@@ -253,6 +253,35 @@ TEST(Adaptive, ThinPartsKeepPiEdgesRoundTheirSection) {
   EXPECT_GT(bulbs, 3 * waist);
 }
 
+TEST(Adaptive, ACountTooLowForTheThinPartsCapsGoesWithoutThem) {
+  // At 60 vertices, lengths of twice the local feature size would take most of the count, the
+  // bulbs' as well as the waist's: with them, the bulbs' longest target length is 1.27, against
+  // 0.77 at 80, where the caps hold at the waist only. Without them (more than two fifths of the
+  // count), the lengths scale with the count as a density's do, about as its square root.
+  const TriangleMesh shape = dumbbell(0.08, 160, 96);
+  std::vector<Index> same(shape.vertices.size());
+  for (Index v = 0; v < same.size(); ++v) same[v] = v;
+  const std::vector<double> lfs = local_feature_size(shape, {0, 1, 0});
+  const auto longest_and_waist = [&](std::size_t vertices) {
+    RemeshSettings s;
+    s.vertices = vertices;
+    s.sizing.adaptive = 1.5;
+    const std::optional<SizeField> field = make_size_field(shape, same, s);
+    double bulbs = 0, waist = 0;  // waist: the most over twice the local feature size
+    for (Index v = 0; v < shape.vertices.size(); ++v) {
+      bulbs = std::max(bulbs, field->at_vertex(v));
+      if (std::abs(shape.vertices[v].z) < 0.05)
+        waist = std::max(waist, field->at_vertex(v) / (2 * lfs[v]));
+    }
+    return std::pair{bulbs, waist};
+  };
+  const auto [longest_60, waist_60] = longest_and_waist(60);
+  const auto [longest_80, waist_80] = longest_and_waist(80);
+  EXPECT_LE(waist_80, 1 + 1e-9);  // capped at 80
+  EXPECT_GT(waist_60, 1.0);       // not at 60
+  EXPECT_LT(longest_60 / longest_80, std::sqrt(80.0 / 60) * 1.05);
+}
+
 TEST(Adaptive, SizesFromAFile) {
   const TempDir dir;
   const TriangleMesh sphere = icosphere(2);
