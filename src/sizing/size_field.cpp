@@ -265,8 +265,9 @@ std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
 double capped_share(const TriangleMesh& mesh, const RawSizes& plain, const RawSizes& capped,
                     const SizingSettings& s, double k) {
   const std::vector<bool> used = used_vertices(mesh);
-  return 1 - SizeField(mesh, scaled_sizes(mesh, plain, used, k, s)).vertex_count() /
-                 SizeField(mesh, scaled_sizes(mesh, capped, used, k, s)).vertex_count();
+  const EdgeGraph graph(mesh);  // both fields graded on it
+  return 1 - SizeField(mesh, scaled_sizes(mesh, plain, used, k, s, &graph)).vertex_count() /
+                 SizeField(mesh, scaled_sizes(mesh, capped, used, k, s, &graph)).vertex_count();
 }
 
 // The field of lengths scaled from `k` to the count `vertices` asks for (0: k as it is). One
