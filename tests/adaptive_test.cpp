@@ -282,6 +282,42 @@ TEST(Adaptive, ACountTooLowForTheThinPartsCapsGoesWithoutThem) {
   EXPECT_LT(longest_60 / longest_80, std::sqrt(80.0 / 60) * 1.05);
 }
 
+// The output vertices nearer `centre` than `radius`.
+std::size_t vertices_near(const TriangleMesh& mesh, const Vec3& centre, double radius) {
+  return static_cast<std::size_t>(
+      std::count_if(mesh.vertices.begin(), mesh.vertices.end(),
+                    [&](const Vec3& p) { return distance(p, centre) < radius; }));
+}
+
+TEST(Adaptive, ComponentsShareTheCountAsTheSizingAsksNotByArea) {
+  // Two unit spheres far apart, the second asked for edges half as long: four times as many
+  // vertices per area, 4/5 of the count (by area, half).
+  const TriangleMesh two = concatenate(icosphere(3), transformed(icosphere(3), 1.0, {4, 0, 0}));
+  RemeshSettings s;
+  s.vertices = 500;
+  s.topology_rounds = 0;
+  for (const Vec3& p : two.vertices) s.sizing.edge_lengths.push_back(p.x > 2 ? 0.5 : 1.0);
+  const RemeshResult r = remesh(two, s);
+  EXPECT_EQ(r.mesh.vertices.size(), 500u);
+  EXPECT_EQ(vertices_near(r.mesh, {4, 0, 0}, 1.5), 400u);
+}
+
+TEST(Adaptive, ASmallComponentGetsTheSeedsItsFeatureSizeAsks) {
+  // Spheres of radius 1 and 0.25: by area the small one would get 1/17 of the count (24 of
+  // 400), too few to keep it a sphere beside the other's lengths; seeds ∝ area / lfs give it a
+  // fifth (80).
+  const TriangleMesh two = concatenate(icosphere(4), transformed(icosphere(4), 0.25, {3, 0, 0}));
+  RemeshSettings s;
+  s.vertices = 400;
+  s.sizing.adaptive = 1.5;
+  const RemeshResult r = remesh(two, s);
+  EXPECT_TRUE(same_topology(analyze_topology(r.mesh), analyze_topology(two)));
+  EXPECT_EQ(r.islands_seeded + r.seeds_refined + r.links_mended + r.count_grown, 0u);
+  const std::size_t small = vertices_near(r.mesh, {3, 0, 0}, 0.5);
+  EXPECT_GT(small, 64u);
+  EXPECT_LT(small, 96u);
+}
+
 TEST(Adaptive, SizesFromAFile) {
   const TempDir dir;
   const TriangleMesh sphere = icosphere(2);

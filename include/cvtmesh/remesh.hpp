@@ -245,9 +245,10 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
 double requested_edge_length(const TriangleMesh& mesh, const RemeshSettings& settings);
 
 // Each connected component (triangles joined by edges) is remeshed on its own, with its own seeds
-// (none owns another component's surface): the count is shared by area, each component getting
-// at least 4 vertices and more than its feature seeds. Components that touch at a vertex keep it
-// as a corner and still touch there in the output. With initial seeds the mesh is remeshed whole.
+// (none owns another component's surface): the count is shared by area (under a sizing, by what
+// the sizing of the whole asks of each), each component getting at least 4 vertices and more than
+// its feature seeds. Components that touch at a vertex keep it as a corner and still touch there
+// in the output. With initial seeds the mesh is remeshed whole.
 // Throws InvalidArgument for bad settings, InputError for a mesh without area, ResourceError
 // when the job would need more memory than is available (checked first), Cancelled when
 // settings.cancel asked to stop.
