@@ -230,13 +230,16 @@ std::size_t enough_for_features(const Component& part, const FeatureSettings& se
 std::vector<double> part_weights(const TriangleMesh& mesh, const std::vector<Component>& parts,
                                  const RemeshSettings& settings) {
   std::vector<double> weights;
-  if (!settings.sizing.active()) {
+  std::optional<SizeField> field;
+  if (settings.sizing.active()) {
+    std::vector<Index> same(mesh.vertices.size());
+    std::iota(same.begin(), same.end(), Index{0});
+    field = make_size_field(mesh, same, settings);
+  }
+  if (!field) {
     for (const Component& part : parts) weights.push_back(part.area);
     return weights;
   }
-  std::vector<Index> same(mesh.vertices.size());
-  std::iota(same.begin(), same.end(), Index{0});
-  const std::optional<SizeField> field = make_size_field(mesh, same, settings);
   for (const Component& part : parts) {
     std::vector<double> sizes;
     for (const Index v : part.input_vertex) sizes.push_back(field->at_vertex(v));
