@@ -304,7 +304,7 @@ SizeField fitted(const TriangleMesh& mesh, const RawSizes& h, const SizingSettin
       found = std::exp(x);
       return field;
     }
-    if (std::abs(f) < best_f) best_f = std::abs(f), best_x = x, best = std::move(field);
+    if (!best || std::abs(f) < best_f) best_f = std::abs(f), best_x = x, best = std::move(field);
     (f > 0 ? lo : hi) = x;
     const double slope = step == 0 ? -2.0 : std::clamp((f - last_f) / (x - last_x), -2.0, -0.05);
     last_x = x, last_f = f;
