@@ -231,11 +231,7 @@ std::vector<double> part_weights(const TriangleMesh& mesh, const std::vector<Com
                                  const RemeshSettings& settings) {
   std::vector<double> weights;
   std::optional<SizeField> field;
-  if (settings.sizing.active()) {
-    std::vector<Index> same(mesh.vertices.size());
-    std::iota(same.begin(), same.end(), Index{0});
-    field = make_size_field(mesh, same, settings);
-  }
+  if (settings.sizing.active()) field = make_size_field(mesh, {}, settings);
   if (!field) {
     for (const Component& part : parts) weights.push_back(part.area);
     return weights;

@@ -2,7 +2,6 @@
 #include "cvtmesh/remesh.hpp"
 
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <utility>
 
@@ -46,8 +45,6 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
   std::optional<SizeField> field;
   std::optional<TriangleMesh> split;  // where the field is made, if not on `mesh`
   if (s.sizing.active() && s.vertices == 0) {
-    std::vector<Index> same(mesh.vertices.size());
-    std::iota(same.begin(), same.end(), Index{0});
     // As remesh_unit makes it: an adaptive sizing narrows at the gaps between features.
     std::optional<Features> features;
     if (s.sizing.adaptive > 0) {
@@ -55,7 +52,7 @@ std::size_t requested_vertex_count(const TriangleMesh& mesh, const RemeshSetting
       at_scale.scale = scale_before_sizing(mesh, s);
       features = detect_features(mesh, at_scale);
     }
-    field = make_size_field(mesh, same, s, features ? &*features : nullptr, &split);
+    field = make_size_field(mesh, {}, s, features ? &*features : nullptr, &split);
   }
   return unit_vertex_count(mesh, s, field ? &*field : nullptr);
 }

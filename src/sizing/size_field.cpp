@@ -123,18 +123,21 @@ RawSizes raw_sizes(const TriangleMesh& mesh, const std::vector<Index>& new_id,
             std::move(lfs), {}};
   }
   std::vector<double> h(mesh.vertices.size(), 0);
+  // The caller's vertex v is `mesh`'s new_id[v]; without new_id, v itself.
+  const std::size_t given = new_id.empty() ? mesh.vertices.size() : new_id.size();
+  const auto id = [&](std::size_t v) { return new_id.empty() ? static_cast<Index>(v) : new_id[v]; };
   if (!s.edge_lengths.empty()) {
-    if (s.edge_lengths.size() != new_id.size())
+    if (s.edge_lengths.size() != given)
       throw InvalidArgument("the sizing has " + std::to_string(s.edge_lengths.size()) +
-                            " edge lengths for " + std::to_string(new_id.size()) + " vertices");
-    for (std::size_t v = 0; v < new_id.size(); ++v) h[new_id[v]] = s.edge_lengths[v];
+                            " edge lengths for " + std::to_string(given) + " vertices");
+    for (std::size_t v = 0; v < given; ++v) h[id(v)] = s.edge_lengths[v];
   } else {
     for (std::size_t v = 0; v < h.size(); ++v) h[v] = s.edge_length_at(mesh.vertices[v]);
   }
   const std::vector<bool> used = used_vertices(mesh);
-  for (std::size_t v = 0; v < new_id.size(); ++v) {
-    const double length = h[new_id[v]];
-    if (used[new_id[v]] && !(length > 0 && std::isfinite(length)))
+  for (std::size_t v = 0; v < given; ++v) {
+    const double length = h[id(v)];
+    if (used[id(v)] && !(length > 0 && std::isfinite(length)))
       throw InvalidArgument("the target edge length at vertex " + std::to_string(v) + " is " +
                             std::to_string(length) + "; it must be positive and finite");
   }

@@ -34,7 +34,8 @@ class SizeField {
 };
 
 // The size field the settings ask for on `mesh` (the remesher's copy: spatially sorted by
-// `new_id`, scaled to about unit size, with the settings scaled alike), scaled so that the
+// `new_id`, the caller's vertex v being mesh's new_id[v], or in the caller's order where new_id
+// is empty; scaled to about unit size, with the settings scaled alike), scaled so that the
 // output size comes out as `settings` asks (see RemeshSettings); unset when the sizing is not
 // active and no feature gap or handle narrows the even lengths (SizingSettings::gap_gradation).
 // An adaptive or even sizing given `features` (ids of `mesh`) narrows to their gaps
