@@ -231,26 +231,42 @@ TEST(Adaptive, GradationBoundsNeighbouringTargetLengths) {
 
 TEST(Adaptive, ThinPartsKeepPiEdgesRoundTheirSection) {
   // At 150 vertices, edges ∝ √lfs alone would be about 0.18 long at the waist, whose radius and
-  // local feature size are 0.08: 2.8 edges round it. Capped at twice the local feature size,
-  // they keep π edges round it; the bulbs' edges are three times as long.
+  // local feature size are 0.08: 2.8 edges round it. Capped at 1.6 times the local feature size,
+  // they keep four edges round it, which takes under a tenth of the count; the bulbs' edges are
+  // three times as long. At 100, that cap would take more, and the lengths are capped at twice
+  // the local feature size (π edges round), which takes under two fifths.
   const TriangleMesh shape = dumbbell(0.08, 160, 96);
   std::vector<Index> same(shape.vertices.size());
   for (Index v = 0; v < same.size(); ++v) same[v] = v;
   RemeshSettings s;
-  s.vertices = 150;
   s.sizing.adaptive = 1.5;
-  const std::optional<SizeField> field = make_size_field(shape, same, s);
-  ASSERT_TRUE(field.has_value());
   const std::vector<double> lfs = local_feature_size(shape, {0, s.seed, 0});
-  double waist = 0, bulbs = 0;
-  for (Index v = 0; v < shape.vertices.size(); ++v) {
-    if (std::abs(shape.vertices[v].z) < 0.05) {
-      EXPECT_LE(field->at_vertex(v), 2 * lfs[v] * (1 + 1e-9));
-      waist = std::max(waist, field->at_vertex(v));
+  // The waist's longest target length and the most of its lengths over its local feature size;
+  // the bulbs' longest.
+  struct Lengths {
+    double waist = 0, per_lfs = 0, bulbs = 0;
+  };
+  const auto lengths_at = [&](std::size_t vertices) {
+    s.vertices = vertices;
+    const std::optional<SizeField> field = make_size_field(shape, same, s);
+    EXPECT_TRUE(field.has_value());
+    Lengths out;
+    for (Index v = 0; field && v < shape.vertices.size(); ++v) {
+      const double h = field->at_vertex(v);
+      if (std::abs(shape.vertices[v].z) < 0.05) {
+        out.waist = std::max(out.waist, h);
+        out.per_lfs = std::max(out.per_lfs, h / lfs[v]);
+      }
+      if (std::abs(shape.vertices[v].z) > 1) out.bulbs = std::max(out.bulbs, h);
     }
-    if (std::abs(shape.vertices[v].z) > 1) bulbs = std::max(bulbs, field->at_vertex(v));
-  }
-  EXPECT_GT(bulbs, 3 * waist);
+    return out;
+  };
+  const Lengths at_150 = lengths_at(150);
+  EXPECT_LE(at_150.per_lfs, 1.6 * (1 + 1e-9));
+  EXPECT_GT(at_150.bulbs, 3 * at_150.waist);
+  const Lengths at_100 = lengths_at(100);
+  EXPECT_GT(at_100.per_lfs, 1.6 * 1.1);
+  EXPECT_LE(at_100.per_lfs, 2 * (1 + 1e-9));
 }
 
 TEST(Adaptive, ACountTooLowForTheThinPartsCapsGoesWithoutThem) {

@@ -76,10 +76,10 @@ struct SizingSettings {
   // curvature. The lengths, once scaled to the output size, are graded to change by at most
   // 1/adaptive per unit length (1.5 is a good default; higher: smoother). h ∝ lfs, Theorem 2's
   // ε-sampling, was tried: it took more seeds from topology control on the corpus at 2k (3,853
-  // against 1,796 at seed 1), with a worse Hausdorff max and θmin. h is capped at 2 lfs instead,
-  // so that a thin part keeps π edges round its section, and a handle thinner than the clamp
-  // below gets six edges round its throat, as a hole does; unless, with a vertex count, those
-  // caps would take more than two fifths of it.
+  // against 1,796 at seed 1), with a worse Hausdorff max and θmin. h is capped at 1.6 lfs instead
+  // (four edges round a thin part's section) where, with a vertex count, that takes at most a
+  // tenth of it, else at 2 lfs (π edges) where that takes at most two fifths; a handle thinner
+  // than the clamp below gets six edges round its throat, as a hole does, while a cap holds.
   double adaptive = 0;
   std::size_t lfs_samples = 0;  // LfsSettings::samples, for adaptive
   // Adaptive only: the local feature sizes are kept within this factor of their median (by

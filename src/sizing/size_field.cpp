@@ -1,6 +1,7 @@
 #include "sizing/size_field.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -33,18 +34,27 @@ constexpr double kGapFloor = 1e-3;
 constexpr double kEvenGapReach = 0.5;
 constexpr double kGentler = 0.75;
 constexpr int kGentlerSteps = 8;
-// An adaptive length is at most this many times the (clamped) local feature size: a limb of
-// radius r, whose lfs is r, then keeps π edges round its section, as an even sizing keeps across
-// a gap or round a handle. √lfs alone left thin parts under three edges round at low counts, and
+// An adaptive length is at most a few times the (clamped) local feature size: a limb of radius r,
+// whose lfs is r, keeps π edges round its section at twice it, as an even sizing keeps across a
+// gap or round a handle. √lfs alone left thin parts under three edges round at low counts, and
 // topology control mended them seed by seed (the corpus at 2k, seed 1: 311 seeds added, 223
-// with this cap; camel.off's tail, 0.013 thick under edges of 0.016, took 49, 36 with it).
-constexpr double kLengthsPerLfs = 2;
-// The most of the count that those caps, and six edges round an adaptive sizing's thin handles
-// (add_handle_caps), may take from the rest of the surface; where they would take more, the count
-// is too low for them and the sizes go without. femur.off's throats took a third at 2k (seeds
-// added 129 → 28, θmin 32.5° → 36.0°, Hausdorff mean 0.053% → 0.063%); at 1k three fifths (θmin
-// 37.8° → 23.2°), and bull.off's thin parts three quarters (Hausdorff max 1.0% → 2.4%).
-constexpr double kMostCappedShare = 0.4;
+// with caps at twice lfs; camel.off's tail, 0.013 thick under edges of 0.016, took 49, 36 with
+// them). The caps take vertices from the rest of the surface, whose edges then lengthen: each
+// holds only while its share of the count (capped_share) is at most its `most_share`; where
+// neither holds, the count is too low for them and the sizes go without. The tighter cap (four
+// edges round) only where it takes little: on the corpus at 2k, seeds 1-6, topology control
+// added 1,097 seeds where it added 1,177 with twice lfs alone, the Hausdorff mean the same on
+// average (ChineseDragon-10kv 12-20 → 0 at seeds 2-6); held to two fifths, 928 seeds, but the
+// Hausdorff mean 18% higher on camel.off, whose legs took 31% of the count, and couplingdown.off
+// added 4-5 → 15-82 seeds, its rest left too coarse. Twice lfs: femur.off's throats took a third
+// at 2k (seeds added 129 → 28, θmin 32.5° → 36.0°, Hausdorff mean 0.053% → 0.063%); at 1k three
+// fifths (θmin 37.8° → 23.2°), and bull.off's thin parts three quarters (Hausdorff max 1.0% →
+// 2.4%). Six edges round an adaptive sizing's thin handles (add_handle_caps) hold with the caps.
+struct ThinPartCap {
+  double per_lfs;
+  double most_share;
+};
+constexpr std::array<ThinPartCap, 2> kThinPartCaps = {{{1.6, 0.1}, {2, 0.4}}};
 
 // Seeds per unit area for edges of length h: equilateral triangles, two per vertex.
 double seeds_per_area(double h) {
@@ -89,8 +99,8 @@ struct RawSizes {
   std::vector<double> hole;
   double hole_floor = 0;
   // Adaptive: per vertex, the local feature size as clamped (0 where the vertex has no area),
-  // for the thin parts' caps: kLengthsPerLfs times it, in mesh units, held down to `floor` as the
-  // gaps are, added once the lengths' scale is first estimated (add_thin_part_caps).
+  // for the thin parts' caps: kThinPartCaps' per_lfs times it, in mesh units, held down to `floor`
+  // as the gaps are, added once the lengths' scale is first estimated (add_thin_part_caps).
   std::vector<double> lfs;
   std::vector<double> thin;
 };
@@ -174,10 +184,10 @@ void add_feature_gaps(const TriangleMesh& mesh, const Features* features, double
 }
 
 // An adaptive sizing's caps at thin parts (RawSizes::thin).
-void add_thin_part_caps(RawSizes& raw) {
+void add_thin_part_caps(RawSizes& raw, double per_lfs) {
   raw.thin.assign(raw.lfs.size(), std::numeric_limits<double>::infinity());
   for (std::size_t v = 0; v < raw.lfs.size(); ++v)
-    if (raw.lfs[v] > 0) raw.thin[v] = kLengthsPerLfs * raw.lfs[v];
+    if (raw.lfs[v] > 0) raw.thin[v] = per_lfs * raw.lfs[v];
 }
 
 // The widths of the handles as thin as the narrow places add_feature_gaps looks for
@@ -265,10 +275,10 @@ std::vector<double> scaled_sizes(const TriangleMesh& mesh, const RawSizes& raw,
 
 // The share of the count that the sizes `capped` take from the rest of the surface against
 // `plain` at the lengths' scale `k`: that of their vertices that `plain` would not ask for.
-double capped_share(const TriangleMesh& mesh, const RawSizes& plain, const RawSizes& capped,
-                    const SizingSettings& s, double k) {
+// Both fields are graded on `graph`, the mesh's.
+double capped_share(const TriangleMesh& mesh, const EdgeGraph& graph, const RawSizes& plain,
+                    const RawSizes& capped, const SizingSettings& s, double k) {
   const std::vector<bool> used = used_vertices(mesh);
-  const EdgeGraph graph(mesh);  // both fields graded on it
   return 1 - SizeField(mesh, scaled_sizes(mesh, plain, used, k, s, &graph)).vertex_count() /
                  SizeField(mesh, scaled_sizes(mesh, capped, used, k, s, &graph)).vertex_count();
 }
@@ -406,7 +416,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
   const std::vector<double> handles = thin_handles(mesh, k, s, h);
   // An adaptive sizing's thin parts and handles: the sizes without the thin parts' caps and with
   // π edges round the throats, as an even sizing's, to go back to where the caps take too many
-  // (kMostCappedShare); with them and six edges round the throats, as round a hole
+  // (kThinPartCaps); with them and six edges round the throats, as round a hole
   // (cap_at_small_holes). With π edges, the thin parts' caps around femur.off's throats at 2k
   // (seeds 1-3) left 94, 81 and 105 seeds to add; with six, 28, 9 and 25 (129, 71 and 75 with
   // neither cap; six edges without the thin parts' caps, 234 at seed 1).
@@ -414,7 +424,6 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
   if (s.adaptive > 0) {
     plain = h;
     add_handle_caps(handles, 1.0, k, s, *plain);
-    add_thin_part_caps(h);
   }
   // An even sizing keeps π edges round a throat: at six, femur's grading took more than a tenth
   // of the count at 2k, the handles went to topology control, and it added 674 seeds, not 169.
@@ -482,12 +491,23 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
     }
   }
   if (plain && vertices > 0) {
-    Features moved = features ? *features : Features{};
-    double scale = 0;
-    SizeField field = field_at(g, storage, features ? &moved : nullptr, &scale);
-    if (capped_share(mesh, *plain, h, s, scale) <= kMostCappedShare) {
-      if (features) *features = std::move(moved);
-      return field;
+    const RawSizes uncapped = std::move(h);
+    const EdgeGraph graph(mesh);
+    for (const ThinPartCap cap : kThinPartCaps) {
+      h = uncapped;
+      add_thin_part_caps(h, cap.per_lfs);
+      // The share grows with the scale, which the caps raise from its first estimate: a cap over
+      // its share there is passed by without the fit (igea.ply adaptive at 2k: 0.3 s).
+      if (&cap != &kThinPartCaps.back() &&
+          capped_share(mesh, graph, *plain, h, s, k) > cap.most_share)
+        continue;
+      Features moved = features ? *features : Features{};
+      double scale = 0;
+      SizeField field = field_at(g, storage, features ? &moved : nullptr, &scale);
+      if (capped_share(mesh, graph, *plain, h, s, scale) <= cap.most_share) {
+        if (features) *features = std::move(moved);
+        return field;
+      }
     }
     h = std::move(*plain);
   }
