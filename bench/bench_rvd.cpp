@@ -43,13 +43,14 @@
 //     pass with integrals on them (pass_s); spread_over_pass is the cost in passes (the spread
 //     seeds spare the optimization about 5 of its first iterations, paper §4.1's initial
 //     sampling), and energy_ratio the spread seeds' CVT energy over the random ones'.
-//   BM_CvtPass/M: one evaluation of the CVT objective as the optimizer makes it in its steady
+//   BM_CvtPass/M/D: one evaluation of the CVT objective as the optimizer makes it in its steady
 //     state, on one thread: a diagram of 5,000 well-spread seeds (sample elimination, as a remesh
 //     starts) built with a warm NeighborCache, then traversed with integrals (the surface's unit
 //     normals kept, as the objective keeps them); M = 0 on icosphere level 5 (20,480 faces), 1 on
-//     ../shared/data/fandisk.off (12,946 faces). Timed as Google Benchmark times a loop (many
-//     iterations; compare runs by their min with repetitions), with counters polygons_per_pass and
-//     ns_per_polygon: the cost of the clipping core.
+//     ../shared/data/fandisk.off (12,946 faces); D = 1 with a density (ρ from 1 to about 4 across
+//     the bounding box, linear over each triangle, as adaptive sizes give one), 0 without. Timed as
+//     Google Benchmark times a loop (many iterations; compare runs by their min with repetitions),
+//     with counters polygons_per_pass and ns_per_polygon: the cost of the clipping core.
 //   BM_SeedOrder/N: N spread seeds (sample elimination, which returns them in Morton order) on
 //     icosphere level 6 (81,920 faces), in that order against the same seeds shuffled, on one
 //     thread: an RVD pass with integrals and an extraction, each with its build;
@@ -79,6 +80,7 @@
 #include <filesystem>
 #include <optional>
 #include <random>
+#include <string>
 #include <utility>
 
 #include "cvt/polish_defects.hpp"
@@ -457,6 +459,7 @@ BENCHMARK(BM_PieceShapes)
 
 void BM_CvtPass(benchmark::State& state) {
   const bool shared = state.range(0) == 1;
+  const bool dense = state.range(1) == 1;
   if (shared && !std::filesystem::exists(testing::shared_data() / "fandisk.off")) {
     state.SkipWithError("fandisk.off not found (set CVTMESH_SHARED_DATA)");
     return;
@@ -467,10 +470,17 @@ void BM_CvtPass(benchmark::State& state) {
   NeighborCache cache;
   { const RestrictedVoronoiDiagram warm(mesh, seeds, cache); }
   const std::vector<Vec3> normals = unit_normals(mesh);  // as the objective keeps them
+  // A density that varies over the whole surface, as adaptive sizes give one (issue 20).
+  std::vector<double> density;
+  if (dense) {
+    const BoundingBox box = bounding_box(mesh);
+    for (const Vec3& v : mesh.vertices)
+      density.push_back(1 + 3 * distance(v, box.min) / box.diagonal());
+  }
   std::size_t polygons = 0;
   for (auto _ : state) {
     const RestrictedVoronoiDiagram rvd(mesh, seeds, cache);
-    CellIntegrator integrator(rvd, {}, normals);
+    CellIntegrator integrator(rvd, density, normals);
     polygons = rvd.traverse(integrator).polygons;
     benchmark::DoNotOptimize(integrator.result().total_energy);
   }
@@ -478,10 +488,11 @@ void BM_CvtPass(benchmark::State& state) {
   state.counters["ns_per_polygon"] =
       benchmark::Counter(static_cast<double>(polygons) * static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-  state.SetLabel(shared ? "fandisk.off" : "icosphere level 5");
+  state.SetLabel(std::string(shared ? "fandisk.off" : "icosphere level 5") +
+                 (dense ? ", with a density" : ""));
 }
 BENCHMARK(BM_CvtPass)
-    ->DenseRange(0, 1)
+    ->ArgsProduct({{0, 1}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->ComputeStatistics("min", [](const std::vector<double>& v) {
       return *std::min_element(v.begin(), v.end());

@@ -403,6 +403,35 @@ TEST(RvdIntegrals, LinearDensityMatchesClosedForm) {
   EXPECT_NEAR(r.moment[0].y, 0.0, 1e-12);
 }
 
+TEST(RvdIntegrals, EnergyWithALinearDensityMatchesQuadrature) {
+  // ∫ρ‖x − s‖² over each cell with ρ linear over each triangle: a cubic polynomial, which the
+  // degree-3 rule (the centroid, weight −27/48, and (3/5, 1/5, 1/5) and its turns, 25/48)
+  // integrates exactly over each of a fine mesh's triangles, as over each of its cells' polygons.
+  // Here every cell is one seed's: a single seed, so its cell is the whole surface.
+  const TriangleMesh m = torus(1, 0.4, 24, 12);
+  std::vector<double> rho(m.vertices.size());
+  for (std::size_t v = 0; v < rho.size(); ++v)
+    rho[v] = 1 + 0.5 * m.vertices[v].x + 0.25 * m.vertices[v].z * m.vertices[v].z;
+  const Vec3 seed{0.3, -0.2, 0.1};
+  const RestrictedVoronoiDiagram rvd(m, {seed});
+  CellIntegrator integrator(rvd, rho);
+  rvd.traverse(integrator);
+  double expected = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const std::array<Vec3, 3> q = m.corners(t);
+    const Triangle& f = m.triangles[t];
+    const auto at = [&](double la, double lb, double lc) {
+      const Vec3 x = la * q[0] + lb * q[1] + lc * q[2];
+      const double r = la * rho[f[0]] + lb * rho[f[1]] + lc * rho[f[2]];
+      return r * dot(x - seed, x - seed);
+    };
+    const double sum = -27.0 / 48 * at(1.0 / 3, 1.0 / 3, 1.0 / 3) +
+                       25.0 / 48 * (at(0.6, 0.2, 0.2) + at(0.2, 0.6, 0.2) + at(0.2, 0.2, 0.6));
+    expected += triangle_area(q[0], q[1], q[2]) * sum;
+  }
+  EXPECT_NEAR(integrator.result().energy[0], expected, 1e-12 * expected);
+}
+
 TEST(RvdIntegrals, UniformDensityPathMatchesTheGeneralOne) {
   // No density takes a shortcut for ρ = 1; an explicit ρ = 1 per vertex takes the general
   // formula. Both integrate the same polynomials exactly.

@@ -12,15 +12,26 @@ namespace cvtmesh {
 
 namespace {
 
-// Barycentric coordinates of p in triangle (a, b, c), from sub-triangle areas along the normal.
-std::array<double, 3> barycentric(const Vec3& p, const std::array<Vec3, 3>& t) {
-  const Vec3 n = cross(t[1] - t[0], t[2] - t[0]);
-  const double area2 = dot(n, n);
-  if (area2 == 0) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
-  const double l0 = dot(n, cross(t[1] - p, t[2] - p)) / area2;
-  const double l1 = dot(n, cross(t[2] - p, t[0] - p)) / area2;
-  return {l0, l1, 1 - l0 - l1};
-}
+// A density linear over a triangle, ρ(p) = ρ(c0) + slope·(p − c0) for p in its plane, from its
+// values at the corners: read at a polygon's vertices with one dot product each, where
+// barycentric coordinates took three cross products each.
+struct LinearDensity {
+  Vec3 origin, slope;
+  double base = 0;
+
+  LinearDensity(const std::array<Vec3, 3>& c, const std::array<double, 3>& r) : origin(c[0]) {
+    // λ1 = (e2 × n)·(p − c0) / ‖n‖², λ2 = (n × e1)·(p − c0) / ‖n‖².
+    const Vec3 e1 = c[1] - c[0], e2 = c[2] - c[0], n = cross(e1, e2);
+    const double n2 = dot(n, n);
+    if (n2 == 0) {  // no plane: the corners' mean
+      base = (r[0] + r[1] + r[2]) / 3;
+      return;
+    }
+    slope = (1 / n2) * ((r[1] - r[0]) * cross(e2, n) + (r[2] - r[0]) * cross(n, e1));
+    base = r[0];
+  }
+  double at(const Vec3& p) const { return base + dot(slope, p - origin); }
+};
 
 // ∫ over triangle p of ρ (linear, values r) times 1, x and ‖x − seed‖², with
 // ∫ λ_a λ_b λ_c = 2A·a!b!c!/5! for the exponents of the barycentric coordinates.
@@ -43,23 +54,19 @@ FanIntegral integrate_triangle(const std::array<Vec3, 3>& p, const std::array<do
   FanIntegral f;
   f.mass = area * r_sum / 3;
   f.moment = (area / 12) * ((r_sum + r[0]) * p[0] + (r_sum + r[1]) * p[1] + (r_sum + r[2]) * p[2]);
+  // Σ_m r_m Σ_{a,b} (u_a·u_b) ∫λ_m λ_a λ_b, the integral being A/10, A/30 or A/60 when m, a, b
+  // take one, two or three distinct values: 60/A times it is, per m, S + T + 2 u_m·U + 2‖u_m‖²
+  // with U = Σ u_a, S = ‖U‖², T = Σ ‖u_a‖² (the weights 6, 2, 1 are 1 + [a = b] + [a = m] +
+  // [b = m] + 2[a = b = m]).
   const Vec3 u[3] = {p[0] - seed, p[1] - seed, p[2] - seed};
-  double g[3][3];
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) g[a][b] = dot(u[a], u[b]);
-  // Σ_m r_m Σ_{a,b} g_ab ∫λ_m λ_a λ_b, the integral being A/10, A/30 or A/60 when m, a, b take
-  // one, two or three distinct values.
-  double energy = 0;
+  const Vec3 U = u[0] + u[1] + u[2];
+  double T = 0, weighted = 0;
   for (int m = 0; m < 3; ++m) {
-    double s = 0;
-    for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b) {
-        const int distinct = 1 + (a != m) + (b != m && b != a);
-        s += g[a][b] * (distinct == 1 ? 6.0 : distinct == 2 ? 2.0 : 1.0);
-      }
-    }
-    energy += r[m] * s;
+    const double uu = dot(u[m], u[m]);
+    T += uu;
+    weighted += r[m] * (dot(u[m], U) + uu);
   }
+  const double energy = (dot(U, U) + T) * r_sum + 2 * weighted;
   f.energy = energy * area / 60;
   return f;
 }
@@ -136,16 +143,13 @@ void CellIntegrator::polygon(std::size_t chunk, const RvdPolygon& poly) {
     chunks_[chunk].push_back(c);
     return;
   }
-  const auto corners = rvd_.surface().corners(poly.triangle);
-  auto rho = [&](const Vec3& p) {
-    const Triangle& f = rvd_.surface().triangles[poly.triangle];
-    const auto l = barycentric(p, corners);
-    return l[0] * density_[f[0]] + l[1] * density_[f[1]] + l[2] * density_[f[2]];
-  };
-  const double r0 = rho(v[0].point);
-  double r_prev = rho(v[1].point);
+  const Triangle& f = rvd_.surface().triangles[poly.triangle];
+  const LinearDensity rho(rvd_.surface().corners(poly.triangle),
+                          {density_[f[0]], density_[f[1]], density_[f[2]]});
+  const double r0 = rho.at(v[0].point);
+  double r_prev = rho.at(v[1].point);
   for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-    const double r_next = rho(v[k + 1].point);
+    const double r_next = rho.at(v[k + 1].point);
     const FanIntegral f =
         integrate_triangle({v[0].point, v[k].point, v[k + 1].point}, {r0, r_prev, r_next}, seed, n);
     c.mass += f.mass;
