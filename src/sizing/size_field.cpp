@@ -44,12 +44,13 @@ constexpr int kGentlerSteps = 8;
 // neither holds, the count is too low for them and the sizes go without. The tighter cap (four
 // edges round) only where it takes little: on the corpus at 2k, seeds 1-6, topology control
 // added 1,097 seeds where it added 1,177 with twice lfs alone, the Hausdorff mean the same on
-// average (ChineseDragon-10kv 12-20 → 0 at seeds 2-6); held to two fifths, 928 seeds, but the
-// Hausdorff mean 18% higher on camel.off, whose legs took 31% of the count, and couplingdown.off
-// added 4-5 → 15-82 seeds, its rest left too coarse. Twice lfs: femur.off's throats took a third
-// at 2k (seeds added 129 → 28, θmin 32.5° → 36.0°, Hausdorff mean 0.053% → 0.063%); at 1k three
-// fifths (θmin 37.8° → 23.2°), and bull.off's thin parts three quarters (Hausdorff max 1.0% →
-// 2.4%). Six edges round an adaptive sizing's thin handles (add_handle_caps) hold with the caps.
+// average (ChineseDragon-10kv 12-20 → 0 at seeds 2, 3 and 6); held to two fifths, 928 seeds, but
+// the Hausdorff mean 18% higher on camel.off, whose legs took 31% of the count, and
+// couplingdown.off, its rest left too coarse, added 15-101 seeds at four seeds where it added 2-4.
+// Twice lfs: femur.off's throats took a third at 2k (seeds added 129 → 28, θmin 32.5° → 36.0°,
+// Hausdorff mean 0.053% → 0.063%); at 1k three fifths (θmin 37.8° → 23.2°), and bull.off's thin
+// parts three quarters (Hausdorff max 1.0% → 2.4%). Six edges round an adaptive sizing's thin
+// handles (add_handle_caps) hold with the caps.
 struct ThinPartCap {
   double per_lfs;
   double most_share;
@@ -498,9 +499,7 @@ std::optional<SizeField> make_size_field(const TriangleMesh& mesh, const std::ve
       add_thin_part_caps(h, cap.per_lfs);
       // The share grows with the scale, which the caps raise from its first estimate: a cap over
       // its share there is passed by without the fit (igea.ply adaptive at 2k: 0.3 s).
-      if (&cap != &kThinPartCaps.back() &&
-          capped_share(mesh, graph, *plain, h, s, k) > cap.most_share)
-        continue;
+      if (capped_share(mesh, graph, *plain, h, s, k) > cap.most_share) continue;
       Features moved = features ? *features : Features{};
       double scale = 0;
       SizeField field = field_at(g, storage, features ? &moved : nullptr, &scale);
