@@ -90,11 +90,12 @@ TEST(LocalFeatureSize, OfAThinPlateIsHalfItsThickness) {
     if (std::abs(p.z) == 0.05 && std::max(std::abs(p.x), std::abs(p.y)) < 0.7) inside.push_back(v);
   }
   ASSERT_GT(inside.size(), 50u);
-  // Its vertices alone, 0.125 apart across a thickness of 0.1, see it twice as thick (each
-  // pole is the centre of a box of 8 of them, 0.1 away): a coarse CAD-like mesh needs area
-  // samples, which its flat faces allow.
+  // Its vertices alone, 0.125 apart across a thickness of 0.1, make poles that see it twice as
+  // thick (each the centre of a box of 8 of them, 0.1 away); the ray along each vertex's normal
+  // crosses it, and bounds that by half its thickness. So do area samples, which its flat faces
+  // allow.
   const std::vector<double> sparse = local_feature_size(plate, raw());
-  for (const Index v : inside) EXPECT_GT(sparse[v], 0.09);
+  for (const Index v : inside) EXPECT_NEAR(sparse[v] / 0.05, 1.0, 0.01) << "vertex " << v;
   LfsSettings dense = raw();
   dense.samples = 50'000;
   const std::vector<double> lfs = local_feature_size(plate, dense);
