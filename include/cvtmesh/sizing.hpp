@@ -1,6 +1,6 @@
 // Sizing of adaptive remeshing (paper §4.1): the local feature size of a surface, estimated from
-// the poles of a dense sample (Amenta-Bern), and graded so that neighbouring sizes differ
-// smoothly.
+// the poles of a dense sample (Amenta-Bern) and rays along the normals, and graded so that
+// neighbouring sizes differ smoothly.
 #pragma once
 
 #include <cstdint>
@@ -17,8 +17,8 @@ struct LfsSettings {
   // samples on its flat triangles would see the polyhedron itself, whose medial axis reaches
   // every edge: sizes would fall towards 0 at each edge of a tessellated sphere. These many
   // are added nonetheless, for a mesh whose vertices are too sparse for its parts (a coarse
-  // CAD model, whose edges are true features). Parts thinner than the sample's spacing are seen
-  // thicker than they are.
+  // CAD model, whose edges are true features). The poles see parts thinner than the sample's
+  // spacing thicker than they are; the rays along the normals bound them (below).
   std::size_t samples = 0;
   std::uint64_t seed = 1;  // the sampling: same seed, same sizes
   // The sizes are made (1/gradation)-Lipschitz along the mesh's edges: the largest such
@@ -31,8 +31,10 @@ struct LfsSettings {
 };
 
 // The local feature size at each vertex of `mesh` (the distance to the medial axis, estimated as
-// the distance to the nearest pole of the samples), in the mesh's units; 0 for a vertex used by
-// no triangle. Throws InvalidArgument for a mesh without area or a negative gradation.
+// the distance to the nearest pole of the samples, and at most half the distance to the surface
+// along the vertex's normal either way: the largest ball touching the surface there is centred
+// on the normal), in the mesh's units; 0 for a vertex used by no triangle. Throws
+// InvalidArgument for a mesh without area or a negative gradation.
 std::vector<double> local_feature_size(const TriangleMesh& mesh, const LfsSettings& settings = {});
 
 // Which wedges between feature curves (sectors of the surface under 60° at a vertex) narrow the
