@@ -86,8 +86,8 @@ void add_lfs_command(CLI::App& app, Action& run) {
   auto o = std::make_shared<LfsOptions>();
   CLI::App* cmd = app.add_subcommand(
       "lfs",
-      "Local feature size at each vertex, from the poles of a dense sample and the gaps between "
-      "features (PLY out)");
+      "Local feature size at each vertex, from the poles of a dense sample, rays along the "
+      "normals and the gaps between features (PLY out)");
   cmd->add_option("IN", o->input, "Input mesh")->required();
   cmd->add_option("OUT", o->output, "Output PLY: the mesh with vertex property lfs and a colour")
       ->required();
