@@ -21,16 +21,28 @@ namespace cvtmesh {
 
 namespace {
 
-// The used vertices with their area-weighted normals (a vertex whose normals cancel is left
-// out), and `count` area-uniform samples with their triangles' normals.
-std::vector<SurfaceSample> surface_samples(const TriangleMesh& mesh, std::size_t count,
-                                           std::uint64_t seed) {
-  std::vector<Vec3> face_normal(mesh.triangles.size()), vertex_normal(mesh.vertices.size());
+// Each vertex's unit normal, the mean of its triangles' weighted by area; zero where they cancel
+// (or where the vertex has no triangle).
+std::vector<Vec3> unit_vertex_normals(const TriangleMesh& mesh) {
+  std::vector<Vec3> normal(mesh.vertices.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto [a, b, c] = mesh.corners(t);
-    const Vec3 n = cross(b - a, c - a);  // twice the area: the weight of the vertex normals
-    face_normal[t] = unit_or_zero(n);
-    for (const Index v : mesh.triangles[t]) vertex_normal[v] += n;
+    const Vec3 n = cross(b - a, c - a);  // twice the area: the weight
+    for (const Index v : mesh.triangles[t]) normal[v] += n;
+  }
+  for (Vec3& n : normal) n = unit_or_zero(n);
+  return normal;
+}
+
+// The vertices with a normal (`normal`, unit_vertex_normals), and `count` area-uniform samples
+// with their triangles' normals.
+std::vector<SurfaceSample> surface_samples(const TriangleMesh& mesh,
+                                           const std::vector<Vec3>& normal, std::size_t count,
+                                           std::uint64_t seed) {
+  std::vector<Vec3> face_normal(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto [a, b, c] = mesh.corners(t);
+    face_normal[t] = unit_normal(a, b, c);
   }
   const AreaSampler sampler(mesh, seed);
   std::vector<SurfaceSample> samples(count);
@@ -39,8 +51,7 @@ std::vector<SurfaceSample> surface_samples(const TriangleMesh& mesh, std::size_t
     samples[k] = {s.point, face_normal[s.triangle]};
   });
   for (Index v = 0; v < mesh.vertices.size(); ++v)
-    if (const Vec3 n = unit_or_zero(vertex_normal[v]); dot(n, n) > 0)
-      samples.push_back({mesh.vertices[v], n});
+    if (dot(normal[v], normal[v]) > 0) samples.push_back({mesh.vertices[v], normal[v]});
   return samples;
 }
 
@@ -56,20 +67,18 @@ using RayTriangles = std::vector<RayKernel::Triangle_3>;
 using RayPrimitive = CGAL::AABB_triangle_primitive<RayKernel, RayTriangles::const_iterator>;
 using RayTree = CGAL::AABB_tree<CGAL::AABB_traits<RayKernel, RayPrimitive>>;
 
-void bound_by_normal_rays(const TriangleMesh& mesh, std::vector<double>& lfs) {
-  std::vector<Vec3> normal(mesh.vertices.size());
+void bound_by_normal_rays(const TriangleMesh& mesh, const std::vector<Vec3>& normal,
+                          std::vector<double>& lfs) {
   RayTriangles triangles;
   triangles.reserve(mesh.triangles.size());
   const auto point = [](const Vec3& p) { return RayKernel::Point_3(p.x, p.y, p.z); };
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto [a, b, c] = mesh.corners(t);
-    const Vec3 n = cross(b - a, c - a);  // weighted by area
-    for (const Index v : mesh.triangles[t]) normal[v] += n;
     triangles.emplace_back(point(a), point(b), point(c));
   }
   const RayTree tree(triangles.begin(), triangles.end());
   tbb::parallel_for(std::size_t{0}, lfs.size(), [&](std::size_t v) {
-    const Vec3 n = unit_or_zero(normal[v]);
+    const Vec3& n = normal[v];
     if (!(dot(n, n) > 0)) return;
     const Vec3& p = mesh.vertices[v];
     // The vertex's own triangles, which every ray from it touches.
@@ -98,8 +107,9 @@ std::vector<double> local_feature_size(const TriangleMesh& given, const LfsSetti
   const int exponent = size_exponent(given);
   const TriangleMesh mesh = scaled_by_power_of_two(given, -exponent);
   if (!(surface_area(mesh) > 0)) throw InvalidArgument("the surface has no area");
+  const std::vector<Vec3> normals = unit_vertex_normals(mesh);
   const std::vector<Vec3> poles =
-      sample_poles(surface_samples(mesh, settings.samples, settings.seed));
+      sample_poles(surface_samples(mesh, normals, settings.samples, settings.seed));
   // No pole (a flat surface, whose medial axis is at infinity): the size of the whole.
   const double cap = bounding_box(mesh).diagonal();
   std::vector<double> lfs(mesh.vertices.size(), cap);
@@ -109,7 +119,7 @@ std::vector<double> local_feature_size(const TriangleMesh& given, const LfsSetti
       lfs[v] = std::min(cap, distance(mesh.vertices[v], poles[tree(mesh.vertices[v])]));
     });
   }
-  bound_by_normal_rays(mesh, lfs);
+  bound_by_normal_rays(mesh, normals, lfs);
   if (settings.features) lfs = capped_by_feature_gaps(mesh, *settings.features, std::move(lfs));
   if (settings.gradation > 0) lfs = graded(mesh, std::move(lfs), settings.gradation);
 
