@@ -68,8 +68,6 @@
 //     against the same seeds on the same surface cut into triangles smaller than the cells (the
 //     cube into 27,648, the cylinder's sides into 64 rings): coarse_over_fine (issue 19 item 3: a
 //     facet costs what its cells cost), and the seeds each moved.
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
@@ -89,6 +87,7 @@
 #include "cvtmesh/rvd.hpp"
 #include "cvtmesh/rvd_consumers.hpp"
 #include "cvtmesh/sampling.hpp"
+#include "delaunay_baseline.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/spread_samples.hpp"
 #include "geometry/surface_projector.hpp"
@@ -112,18 +111,8 @@ struct Pass {
   TraversalStats stats;
 };
 
-double delaunay_seconds(const std::vector<Vec3>& seeds) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  std::vector<Kernel::Point_3> points;
-  for (const Vec3& p : seeds) points.emplace_back(p.x, p.y, p.z);
-  const auto start = Clock::now();
-  const CGAL::Delaunay_triangulation_3<Kernel> dt(points.begin(), points.end());
-  benchmark::DoNotOptimize(dt.number_of_cells());
-  return seconds(start);
-}
-
 Pass rvd_pass(const TriangleMesh& mesh, const std::vector<Vec3>& seeds) {
-  const double delaunay_s = delaunay_seconds(seeds);
+  const double delaunay_s = bench::delaunay_seconds(seeds);
   const auto start = Clock::now();
   const RestrictedVoronoiDiagram rvd(mesh, seeds);
   CellIntegrator integrator(rvd);

@@ -1,9 +1,5 @@
 // The local feature size (paper §4.1): distances from the surface to the poles of a dense
 // sample, which approximate the medial axis, bounded by rays along the normals; then graded.
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -15,6 +11,7 @@
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
 #include "sizing/gradation.hpp"
+#include "sizing/normal_rays.hpp"
 #include "sizing/poles.hpp"
 
 namespace cvtmesh {
@@ -53,49 +50,6 @@ std::vector<SurfaceSample> surface_samples(const TriangleMesh& mesh,
   for (Index v = 0; v < mesh.vertices.size(); ++v)
     if (dot(normal[v], normal[v]) > 0) samples.push_back({mesh.vertices[v], normal[v]});
   return samples;
-}
-
-// The local feature size bounded by rays along each vertex's normal, both ways: the largest ball
-// inside (or outside) the surface that touches it at p is centred on the normal, so it cannot
-// reach past the first hit at distance t, and lfs(p) is at most t/2. Poles see that too where
-// the vertices sample the surface finely, but not on a thin part whose triangles are longer than
-// it is thick: camel.off's tail, 0.014 thick under input edges of 0.0195, had pole distances up
-// to 1.8 times t/2, and its adaptive lengths then spanned it (at 2k, topology control added
-// 31-39 seeds there; 3-5 with the bound). The outward ray finds gaps between sheets likewise.
-using RayKernel = CGAL::Simple_cartesian<double>;
-using RayTriangles = std::vector<RayKernel::Triangle_3>;
-using RayPrimitive = CGAL::AABB_triangle_primitive<RayKernel, RayTriangles::const_iterator>;
-using RayTree = CGAL::AABB_tree<CGAL::AABB_traits<RayKernel, RayPrimitive>>;
-
-void bound_by_normal_rays(const TriangleMesh& mesh, const std::vector<Vec3>& normal,
-                          std::vector<double>& lfs) {
-  RayTriangles triangles;
-  triangles.reserve(mesh.triangles.size());
-  const auto point = [](const Vec3& p) { return RayKernel::Point_3(p.x, p.y, p.z); };
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    triangles.emplace_back(point(a), point(b), point(c));
-  }
-  const RayTree tree(triangles.begin(), triangles.end());
-  tbb::parallel_for(std::size_t{0}, lfs.size(), [&](std::size_t v) {
-    const Vec3& n = normal[v];
-    if (!(dot(n, n) > 0)) return;
-    const Vec3& p = mesh.vertices[v];
-    // The vertex's own triangles, which every ray from it touches.
-    const auto own = [&](RayTriangles::const_iterator it) {
-      const Triangle& f = mesh.triangles[static_cast<std::size_t>(it - triangles.begin())];
-      return f[0] == v || f[1] == v || f[2] == v;
-    };
-    for (const double side : {-1.0, 1.0}) {
-      const RayKernel::Ray_3 ray(point(p), RayKernel::Vector_3(side * n.x, side * n.y, side * n.z));
-      const auto hit = tree.first_intersection(ray, own);
-      const RayKernel::Point_3* q = hit ? boost::get<RayKernel::Point_3>(&hit->first) : nullptr;
-      if (!q) continue;  // none, or along a triangle's plane
-      // A hit at p itself (a vertex of another sheet at the same place) bounds nothing.
-      if (const double t = distance(p, Vec3{q->x(), q->y(), q->z()}); t > 0)
-        lfs[v] = std::min(lfs[v], t / 2);
-    }
-  });
 }
 
 }  // namespace
