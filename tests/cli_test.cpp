@@ -557,6 +557,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "shape_flips",
                           "shape_moves",
                           "short_edges_collapsed",
+                          "vertices_onto_own_sheet",
                           "vertices_on_cell_normals",
                           "vertices_snapped",
                           "vertices_fitted",

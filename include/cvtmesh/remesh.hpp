@@ -214,6 +214,11 @@ struct RemeshResult {
   // of no length (both ends at one point, where a folded input lies on itself) collapsed last of
   // all, so that no triangle of no area is left.
   std::size_t short_edges_collapsed = 0;
+  // Surface vertices moved, before the sweeps, from one sheet of the input onto the sheet their
+  // triangles face (finish/own_sheet): beside a sharp edge whose faces meet at a narrow angle, a
+  // seed on one face whose cell reached round the edge served triangles along the other, cutting
+  // through the part.
+  std::size_t vertices_onto_own_sheet = 0;
   // Surface vertices moved onto an input crease that the output does not trace as a feature,
   // before the fit (finish/snap_to_creases): a low-poly input remeshed finer keeps its edges.
   std::size_t vertices_snapped = 0;

@@ -21,6 +21,7 @@
 #include "finish/flat_ears.hpp"
 #include "finish/flat_pairs.hpp"
 #include "finish/improve_shapes.hpp"
+#include "finish/own_sheet.hpp"
 #include "finish/snap_to_creases.hpp"
 #include "finish/split_obtuse_corners.hpp"
 #include "finish/valence_three.hpp"
@@ -174,6 +175,15 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   // Last, as it moves vertices off the seeds' positions (which the matching above needs).
   std::vector<VertexSupport> supports =
       vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges);
+  // The surface vertices: those that the finishing steps may move or remove.
+  const auto removable_in = [](const std::vector<VertexSupport>& of) {
+    std::vector<bool> removable;
+    for (const VertexSupport& s : of) removable.push_back(s.kind == VertexSupport::Kind::surface);
+    return removable;
+  };
+  // Before the sweeps, which mend the shapes the moves leave.
+  result.vertices_onto_own_sheet =
+      move_onto_own_sheet(result.mesh, projector, removable_in(supports));
   // Obtuse boundary corners split, then swept, against the output swept as it is: the split
   // leaves the triangles across the halved edge obtuse until the sweeps move its midpoint, and
   // where they cannot, the output without it is kept (ALSTOM_TEST4.off at 1k: Qmin 0.592 as it
@@ -202,13 +212,6 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   const std::size_t pairs = merge_flat_pairs(merged, merged_features, corners_now);
   std::vector<VertexSupport> merged_supports;
   if (pairs > 0) merged_supports = supports;
-  // A vertex of three triangles is often what the flips and moves leave: each output is judged
-  // with them removed.
-  const auto removable_in = [](const std::vector<VertexSupport>& of) {
-    std::vector<bool> removable;
-    for (const VertexSupport& s : of) removable.push_back(s.kind == VertexSupport::Kind::surface);
-    return removable;
-  };
   // Obtuse triangles the sweeps left under the bar, at any vertex (an interior vertex of valence 7
   // among smaller cells, where the sizes grade down to a hole, or one just off a feature curve):
   // the edge across from the obtuse angle halved (on its curve, if it is a feature edge), then
@@ -265,7 +268,8 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
     if (held.mesh.triangles == halved_all) return std::nullopt;
     return swept(std::move(held), from, k);
   };
-  // The rounds from an output swept once, its vertices of three triangles removed first.
+  // The rounds from an output swept once, its vertices of three triangles removed first (a vertex
+  // of three triangles is often what the flips and moves leave: each output is judged without).
   const auto rounds_from = [&](Round start) {
     start.removed += remove_valence_three(start.mesh, removable_in(start.supports), projector);
     BarShapes start_shapes = bar_shapes(start.mesh, narrow, reach);

@@ -331,8 +331,8 @@ std::optional<SurfaceProjector::Near> SurfaceProjector::within(const Vec3& p,
   return search.found();
 }
 
-std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& direction,
-                                              double reach) const {
+std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& direction, double reach,
+                                              const Vec3& facing) const {
   // No line (a zero direction), or nothing to search (an unused vertex's infinite reach).
   if (!(reach > 0) || !std::isfinite(reach) || direction == Vec3{}) return std::nullopt;
   const Vec3 a = p - reach * direction, b = p + reach * direction;
@@ -349,6 +349,7 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
         segment, boost::make_function_output_iterator([&](const Hit& hit) {
           const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
           if (!point) return;  // the segment lies in a triangle's plane: no crossing there
+          if (facing != Vec3{} && !(dot(tree_->normals[hit.second], facing) > 0)) return;
           const double t = dot(vec(*point) - p, direction);
           if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
         }));

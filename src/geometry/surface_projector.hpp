@@ -43,8 +43,10 @@ class SurfaceProjector {
   double squared_distance_to(const Vec3& p, std::size_t triangle) const;
   // The signed distance t, |t| <= reach, of the surface point p + t·direction nearest to p along
   // the line (direction a unit vector), if the line meets the surface within reach of p; none
-  // for a zero direction or a reach that is not positive and finite.
-  std::optional<double> along(const Vec3& p, const Vec3& direction, double reach) const;
+  // for a zero direction or a reach that is not positive and finite. Given `facing`, only the
+  // triangles whose normal makes less than 90° with it count.
+  std::optional<double> along(const Vec3& p, const Vec3& direction, double reach,
+                              const Vec3& facing = {}) const;
   // A triangle's id in the surface given, from its id inside the projector.
   std::size_t surface_triangle(std::size_t triangle) const;
   // Each triangle's unit normal, by its id in the surface given, where the projector holds every

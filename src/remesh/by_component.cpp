@@ -392,6 +392,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.shape_flips += part.shape_flips;
   all.shape_moves += part.shape_moves;
   all.short_edges_collapsed += part.short_edges_collapsed;
+  all.vertices_onto_own_sheet += part.vertices_onto_own_sheet;
   all.vertices_on_cell_normals += part.vertices_on_cell_normals;
   all.vertices_snapped += part.vertices_snapped;
   all.vertices_fitted += part.vertices_fitted;

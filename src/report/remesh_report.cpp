@@ -77,6 +77,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["shape_flips"] = r.shape_flips;
   j["shape_moves"] = r.shape_moves;
   j["short_edges_collapsed"] = r.short_edges_collapsed;
+  j["vertices_onto_own_sheet"] = r.vertices_onto_own_sheet;
   j["vertices_on_cell_normals"] = r.vertices_on_cell_normals;
   j["vertices_snapped"] = r.vertices_snapped;
   j["vertices_fitted"] = r.vertices_fitted;
@@ -137,6 +138,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
       r.iterations, r.rvd_evaluations, r.energy_initial, r.energy_final, r.defects_polished,
       r.polish_rounds, r.shape_flips, r.short_edges_collapsed, r.shape_moves,
       r.vertices_on_cell_normals, r.vertices_snapped, r.vertices_fitted);
+  if (r.vertices_onto_own_sheet > 0)
+    text += fmt::format(
+        "  sheets    {} vertices moved onto the sheet of the input their triangles face (they "
+        "stood on the other face of a sharp edge)\n",
+        r.vertices_onto_own_sheet);
   if (r.flat_ears_removed > 0)
     text += fmt::format(
         "  boundary  {} flat or folded ears removed (a boundary vertex whose one triangle "

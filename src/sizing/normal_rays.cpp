@@ -28,6 +28,10 @@ Kernel::Point_3 point(const Vec3& p) {
   return {p.x, p.y, p.z};
 }
 
+Vec3 vec(const Kernel::Point_3& p) {
+  return {p.x(), p.y(), p.z()};
+}
+
 }  // namespace
 
 void bound_by_normal_rays(const TriangleMesh& mesh, const std::vector<Vec3>& normal,
@@ -53,14 +57,19 @@ void bound_by_normal_rays(const TriangleMesh& mesh, const std::vector<Vec3>& nor
       crossed.clear();
       tree.all_intersected_primitives(Kernel::Segment_3(point(p), point(end)),
                                       std::back_inserter(crossed));
+      // The nearest hit: where the ray runs along a triangle's plane, the nearer end of that
+      // stretch (a surface point on the ray bounds the ball all the same).
       double nearest = std::numeric_limits<double>::infinity();
       for (const Triangles::const_iterator it : crossed) {
         const Triangle& f = mesh.triangles[static_cast<std::size_t>(it - triangles.begin())];
         if (f[0] == v || f[1] == v || f[2] == v) continue;  // its own, which every ray touches
         const auto hit = CGAL::intersection(ray, *it);
-        const Kernel::Point_3* q = hit ? boost::get<Kernel::Point_3>(&*hit) : nullptr;
-        if (!q) continue;  // along the triangle's plane
-        nearest = std::min(nearest, distance(p, Vec3{q->x(), q->y(), q->z()}));
+        if (!hit) continue;
+        if (const Kernel::Point_3* q = boost::get<Kernel::Point_3>(&*hit))
+          nearest = std::min(nearest, distance(p, vec(*q)));
+        else if (const Kernel::Segment_3* e = boost::get<Kernel::Segment_3>(&*hit))
+          nearest =
+              std::min({nearest, distance(p, vec(e->source())), distance(p, vec(e->target()))});
       }
       // A nearest hit at p itself (a vertex of another sheet at the same place) bounds nothing.
       if (nearest > 0 && nearest < 2 * lfs[v]) lfs[v] = nearest / 2;
