@@ -9,7 +9,7 @@
 #include "features/edge_uses.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
-#include "geometry/unit_vector.hpp"
+#include "geometry/vertex_normals.hpp"
 
 namespace cvtmesh {
 
@@ -26,16 +26,11 @@ constexpr double kLeast = 0.5;
 
 std::size_t move_onto_own_sheet(TriangleMesh& mesh, const SurfaceProjector& projector,
                                 std::vector<bool> movable) {
-  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
-  if (nt == 0) return 0;
+  if (mesh.triangles.empty()) return 0;
+  const std::size_t nv = mesh.vertices.size();
   movable.resize(nv, false);
   const std::vector<bool> fixed = on_edges_not_of_two(mesh);
-  std::vector<Vec3> fan(nv);  // the mean of the vertex's triangles' normals, weighted by area
-  for (std::size_t t = 0; t < nt; ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    const Vec3 n = cross(b - a, c - a);
-    for (const Index v : mesh.triangles[t]) fan[v] += n;
-  }
+  const std::vector<Vec3> fan = unit_vertex_normals(mesh);  // the way its triangles face
   const std::vector<double> shortest = shortest_edges(mesh);
   std::vector<Vec3> under(nv);  // the input's normal at each vertex's nearest surface point
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
@@ -59,9 +54,8 @@ std::size_t move_onto_own_sheet(TriangleMesh& mesh, const SurfaceProjector& proj
   std::vector<std::optional<Vec3>> to(nv);
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
     if (!movable[v] || fixed[v] || !away[v] || !backed[v] || disputed[v]) return;
-    const Vec3 n = unit_or_zero(fan[v]);
-    const std::optional<double> t = projector.along(mesh.vertices[v], n, shortest[v], n);
-    if (t && std::abs(*t) >= kLeast * shortest[v]) to[v] = mesh.vertices[v] + *t * n;
+    const std::optional<double> t = projector.along(mesh.vertices[v], fan[v], shortest[v], fan[v]);
+    if (t && std::abs(*t) >= kLeast * shortest[v]) to[v] = mesh.vertices[v] + *t * fan[v];
   });
   std::size_t moved = 0;
   for (std::size_t v = 0; v < nv; ++v)

@@ -10,6 +10,7 @@
 #include "geometry/area_sampler.hpp"
 #include "geometry/point_tree.hpp"
 #include "geometry/unit_vector.hpp"
+#include "geometry/vertex_normals.hpp"
 #include "sizing/gradation.hpp"
 #include "sizing/normal_rays.hpp"
 #include "sizing/poles.hpp"
@@ -17,19 +18,6 @@
 namespace cvtmesh {
 
 namespace {
-
-// Each vertex's unit normal, the mean of its triangles' weighted by area; zero where they cancel
-// (or where the vertex has no triangle).
-std::vector<Vec3> unit_vertex_normals(const TriangleMesh& mesh) {
-  std::vector<Vec3> normal(mesh.vertices.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    const Vec3 n = cross(b - a, c - a);  // twice the area: the weight
-    for (const Index v : mesh.triangles[t]) normal[v] += n;
-  }
-  for (Vec3& n : normal) n = unit_or_zero(n);
-  return normal;
-}
 
 // The vertices with a normal (`normal`, unit_vertex_normals), and `count` area-uniform samples
 // with their triangles' normals.
