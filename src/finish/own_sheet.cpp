@@ -3,12 +3,14 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
 #include "features/edge_uses.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/triangles_around.hpp"
 #include "geometry/vertex_normals.hpp"
 
 namespace cvtmesh {
@@ -51,11 +53,29 @@ std::size_t move_onto_own_sheet(TriangleMesh& mesh, const SurfaceProjector& proj
         if (!away[v] || away[u] || !movable[u]) continue;
         (dot(under[u], fan[v]) > 0 ? backed : disputed)[v] = 1;
       }
+  // The farthest from the input of vertex v's triangles' centroids and edge midpoints, were v at
+  // p: a move must bring them nearer (a vertex of an output coarser than a thin plate may face
+  // away with cause; couplingdown.off at 1k: Hausdorff max 2.79% -> 3.27% where one moved).
+  const std::vector<std::vector<Index>> around = triangles_around(mesh);
+  const auto farthest = [&](std::size_t v, const Vec3& p) {
+    double far = 0;
+    for (const Index t : around[v]) {
+      std::array<Vec3, 3> c = mesh.corners(t);
+      for (int k = 0; k < 3; ++k)
+        if (mesh.triangles[t][k] == v) c[k] = p;
+      for (const Vec3& q : {(1.0 / 3) * (c[0] + c[1] + c[2]), 0.5 * (c[0] + c[1]),
+                            0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0])})
+        far = std::max(far, projector.distance_to(q));
+    }
+    return far;
+  };
   std::vector<std::optional<Vec3>> to(nv);
   tbb::parallel_for(std::size_t{0}, nv, [&](std::size_t v) {
     if (!movable[v] || fixed[v] || !away[v] || !backed[v] || disputed[v]) return;
     const std::optional<double> t = projector.along(mesh.vertices[v], fan[v], shortest[v], fan[v]);
-    if (t && std::abs(*t) >= kLeast * shortest[v]) to[v] = mesh.vertices[v] + *t * fan[v];
+    if (!t || std::abs(*t) < kLeast * shortest[v]) return;
+    const Vec3 p = mesh.vertices[v] + *t * fan[v];
+    if (farthest(v, p) < farthest(v, mesh.vertices[v])) to[v] = p;
   });
   std::size_t moved = 0;
   for (std::size_t v = 0; v < nv; ++v)
