@@ -88,5 +88,57 @@ TEST(OwnSheet, LeavesAVertexWhoseOwnSheetIsUnderHalfAnEdgeAway) {
   EXPECT_EQ(move_onto_own_sheet(m, surface, std::vector<bool>(7, true)), 0u);
 }
 
+// A square sheet facing +z at z = 0; a small patch facing -z at z = -0.4, under the square's
+// middle; given `tab`, another small patch facing +z below it, at z = -0.75. Each patch is 0.04
+// wide.
+TriangleMesh plate_over_patches(bool tab) {
+  TriangleMesh m;
+  const auto square = [&m](double half, double z, bool up) {
+    const auto first = static_cast<Index>(m.vertices.size());
+    m.vertices.insert(m.vertices.end(),
+                      {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}});
+    const Index a = first, b = first + 1, c = first + 2, d = first + 3;
+    if (up)
+      m.triangles.insert(m.triangles.end(), {{a, b, c}, {a, c, d}});
+    else
+      m.triangles.insert(m.triangles.end(), {{a, c, b}, {a, d, c}});
+  };
+  square(1, 0, true);
+  square(0.02, -0.4, false);
+  if (tab) square(0.02, -0.75, true);
+  return m;
+}
+
+// Six vertices on a circle of radius 0.5 in z = 0, and vertex 6 at `centre` joined to them all,
+// the triangles facing +z.
+TriangleMesh ring_over(const Vec3& centre) {
+  TriangleMesh m;
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * std::numbers::pi / 3;
+    m.vertices.push_back({0.5 * std::cos(a), 0.5 * std::sin(a), 0});
+  }
+  m.vertices.push_back(centre);
+  for (Index k = 0; k < 6; ++k) m.triangles.push_back({6, k, (k + 1) % 6});
+  return m;
+}
+
+TEST(OwnSheet, KeepsAMoveOnlyWhereItBringsTheVertexsTrianglesNearerTheInput) {
+  // The centre stands on the patch facing -z, its triangles face +z, and its neighbours stand
+  // on the sheet facing +z: it faces away, and its own sheet is 0.4 above it.
+  TriangleMesh alone = ring_over({0, 0, -0.4});
+  EXPECT_EQ(move_onto_own_sheet(alone, SurfaceProjector(plate_over_patches(false)),
+                                std::vector<bool>(7, true)),
+            1u);
+  EXPECT_NEAR(alone.vertices[6].z, 0, 1e-12);
+  // A patch facing +z 0.35 below it is nearer along the line than the sheet: moving there
+  // would take the farthest of its triangles' centroids and edge midpoints from 0.2 off the
+  // input to 0.25, so it stays.
+  TriangleMesh tabbed = ring_over({0, 0, -0.4});
+  EXPECT_EQ(move_onto_own_sheet(tabbed, SurfaceProjector(plate_over_patches(true)),
+                                std::vector<bool>(7, true)),
+            0u);
+  EXPECT_EQ(tabbed.vertices[6].z, -0.4);
+}
+
 }  // namespace
 }  // namespace cvtmesh
