@@ -91,6 +91,43 @@ TEST(FitSurface, NeverLowersTheWorstTriangleAndDoesNotDependOnTheThreads) {
   EXPECT_GE(q1.q_min, q0.q_min);
 }
 
+// A triangle at one of the input's narrow angles keeps its own shape as its floor; the others
+// keep the worst of theirs: with the bad triangle's vertex said to stand at a narrow angle, the
+// fit may not take the triangles away from it below where the worst of them was.
+TEST(FitSurface, ATriangleAtANarrowAngleDoesNotLowerTheFloorOfTheOthers) {
+  const TriangleMesh fine = testing::torus(1, 0.4, 96, 48);
+  TriangleMesh coarse = testing::torus(1, 0.4, 12, 6);
+  const SurfaceProjector surface(fine);
+  // Uneven spacing, so that the chords sag by different amounts and the moves change shapes.
+  for (std::size_t v = 0; v < coarse.vertices.size(); ++v) {
+    const double k = static_cast<double>(v);
+    coarse.vertices[v] += 0.04 * Vec3{std::sin(7.3 * k), std::cos(5.1 * k), std::sin(3.7 * k)};
+  }
+  coarse.vertices[5] = coarse.vertices[5] + 0.85 * (coarse.vertices[6] - coarse.vertices[5]);
+  for (Vec3& v : coarse.vertices) v = surface.nearest(v).point;
+  std::vector<double> narrow_at(coarse.vertices.size(), 0);
+  narrow_at[5] = 10;
+  const auto worst_away = [&](const TriangleMesh& m) {
+    double worst = 180;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+      const Triangle& f = m.triangles[t];
+      if (f[0] == 5 || f[1] == 5 || f[2] == 5) continue;
+      const auto [a, b, c] = m.corners(t);
+      worst = std::min(worst, triangle_shape(a, b, c).min_angle);
+    }
+    return worst;
+  };
+  const double before = worst_away(coarse);
+  TriangleMesh unflagged = coarse;
+  ASSERT_LT(measure_quality(coarse).angle_min_deg, before - 5);  // the bad one is far worse
+  fit_to_surface(coarse, surface, all(coarse), 2, narrow_at);
+  EXPECT_GE(worst_away(coarse), before);
+  // Without the narrow angle, the bad triangle's floor holds for all: the same fit takes the
+  // others below `before` (else this mesh would not show the difference).
+  fit_to_surface(unflagged, surface, all(unflagged), 2);
+  EXPECT_LT(worst_away(unflagged), before);
+}
+
 // In a remesh, last: the mean distance to a torus falls by a third or more, the worst triangle
 // does not get worse, the topology stays. On a cube, whose output lies in its faces and along its
 // creases, nothing moves.

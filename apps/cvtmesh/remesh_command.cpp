@@ -269,7 +269,7 @@ void add_remesh_command(CLI::App& app, Action& run) {
                   "their Voronoi cells' normal lines and those beside the input's untraced creases "
                   "onto them; never lowers θmin or Qmin (0: none of it; vertices stay on the input "
                   "where the sweeps left them)")
-      ->default_val(1)
+      ->default_val(RemeshSettings{}.fit_rounds)
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--topology-rounds", o->settings.topology_rounds,
                   "Rounds of topology control: seeds added where the output misses feature "

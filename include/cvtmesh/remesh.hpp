@@ -74,7 +74,7 @@ struct RemeshSettings {
   // normal lines and those beside the input's untraced creases onto them (see
   // RemeshResult::vertices_on_cell_normals, vertices_snapped and vertices_fitted); 0 does none of
   // it and keeps every vertex on the input surface where the sweeps left it.
-  int fit_rounds = 1;
+  int fit_rounds = 2;
   // Rounds of topology control (paper §4.4; see RemeshResult): each adds seeds where the
   // output misses feature links or is not homeomorphic to the input, and triangulates again.
   // The best output of all the rounds is kept; they stop early after 4 rounds in a row that

@@ -203,7 +203,7 @@ shape_sweeps : int, default 5
     Sweeps of edge flips and vertex moves along the surface around badly shaped triangles,
     then short-edge collapses where those do not help (at most 1% of the vertices), the last
     step but one (0: none).
-fit_rounds : int, default 1
+fit_rounds : int, default 2
     Rounds of moving surface vertices along their normals so that the input lies between them
     and their triangles' middles, last, after the vertices move onto their Voronoi cells' normal
     lines and those beside the input's untraced creases onto them; never lowers θmin or Qmin (0:
