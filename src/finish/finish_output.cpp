@@ -351,10 +351,7 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
         move_onto_cell_normals(result.mesh, seeds, cells, projector, removable);
   if (settings.fit_rounds > 0)
     result.vertices_snapped = snap_to_creases(result.mesh, surface, features, projector, removable);
-  const SurfaceFit fit =
-      fit_to_surface(result.mesh, projector, removable, settings.fit_rounds,
-                     narrow.empty() ? std::vector<double>{}
-                                    : narrow_angle_at_vertices(result.mesh, narrow, reach));
+  const SurfaceFit fit = fit_to_surface(result.mesh, projector, removable, settings.fit_rounds);
   result.vertices_fitted = fit.vertices_moved;
   // Last of all, once no step moves a vertex again (issue 18: no triangle of no area).
   const std::size_t coincident = collapse_coincident_edges(result.mesh, result.feature_edges);

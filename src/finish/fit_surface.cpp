@@ -13,7 +13,6 @@
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
 #include "quality/min_shape.hpp"
-#include "quality/narrow_angles.hpp"
 
 namespace cvtmesh {
 
@@ -150,31 +149,31 @@ bool acceptable(const TriangleMesh& mesh, std::size_t t, const Vec3& before,
          dot(unit(cross(b - a, c - a)), before) >= kMaxShiftTurnCos;
 }
 
-// Per triangle, the shape it may not fall below: the worst θmin and Q of the triangles away from
-// the input's narrow angles (`narrow_at`, narrow_angle_at_vertices; empty: none), or its own where
-// that is lower, as it is at a narrow angle. Held to the worst over all triangles, one at a narrow
-// angle let the moves take the rest down to it (lion.off at 5k, whose 8° input angle leaves a
-// triangle of 13.7°: θmin away from it 39.4° -> 34.1°).
-std::vector<MinShape> shape_floors(const TriangleMesh& mesh, const std::vector<double>& narrow_at) {
+// Per triangle, the shape it may not fall below: its own, where that is under the aim of the
+// sweeps (kAimAngleDeg, kAimQuality) or under the worst triangle's, else the higher of those two,
+// as cell_normal_points and snap_to_creases hold them. Held to the worst triangle alone, the
+// moves took the others down to it where one was far worse, at one of the input's narrow angles
+// or at a part thinner than the edges (lion.off at 5k, an 8° input angle and a 13.7° triangle
+// there: θmin away from it 39.4° -> 34.1°; femur.off at 5k 37.8° -> 34.6°).
+std::vector<MinShape> shape_floors(const TriangleMesh& mesh) {
   std::vector<MinShape> own(mesh.triangles.size());
-  MinShape away{1, 180};
+  MinShape worst{1, 180};
   for (std::size_t t = 0; t < own.size(); ++t) {
     const auto [a, b, c] = mesh.corners(t);
     own[t] = min_shape(a, b, c);
-    if (!narrow_at.empty() && narrow_angle_at(mesh.triangles[t], narrow_at) > 0) continue;
-    away.min_angle = std::min(away.min_angle, own[t].min_angle);
-    away.quality = std::min(away.quality, own[t].quality);
+    worst.min_angle = std::min(worst.min_angle, own[t].min_angle);
+    worst.quality = std::min(worst.quality, own[t].quality);
   }
+  const MinShape aim{std::max(kAimQuality, worst.quality), std::max(kAimAngleDeg, worst.min_angle)};
   for (MinShape& s : own)
-    s = {std::min(s.quality, away.quality), std::min(s.min_angle, away.min_angle)};
+    s = {std::min(s.quality, aim.quality), std::min(s.min_angle, aim.min_angle)};
   return own;
 }
 
 }  // namespace
 
 SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
-                          std::vector<bool> movable, int rounds,
-                          const std::vector<double>& narrow_at) {
+                          std::vector<bool> movable, int rounds) {
   SurfaceFit fit;
   if (mesh.triangles.empty() || rounds <= 0) return fit;
   const EdgeIds edges = edge_ids(mesh);
@@ -185,7 +184,7 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
   const std::vector<Vec3> start = mesh.vertices;
   for (int round = 0; round < rounds; ++round) {
     // As each round starts: no round takes back what an earlier one gained.
-    const std::vector<MinShape> floors = shape_floors(mesh, narrow_at);
+    const std::vector<MinShape> floors = shape_floors(mesh);
     const std::vector<Vec3> normal = vertex_normals(mesh);
     std::vector<Vec3> face_normal(nt);
     for (std::size_t t = 0; t < nt; ++t) {

@@ -23,13 +23,12 @@ struct SurfaceFit {
 // Moves the vertices of `mesh` flagged in `movable` (feature and corner vertices should not be)
 // along their normals towards `surface`, in `rounds` rounds; vertices of an edge with other than
 // two triangles (a boundary or non-manifold edge) never move. A move is at most 0.3 times the
-// vertex's shortest edge, and it is undone where a triangle it touches would fall below the θmin
-// or Qmin, as they were, of the triangles away from the input's narrow angles (`narrow_at`, per
-// vertex as narrow_angle_at_vertices gives it; empty: no narrow angle), or below its own where
-// that is lower, or turn by more than 25°: the fit never lowers θmin or Qmin, nor those away from
-// the narrow angles. The connectivity does not change. Deterministic, whatever the thread count.
+// vertex's shortest edge, and it is undone where a triangle it touches would turn by more than
+// 25°, or fall below its shape as the round found it where that was under the finishing steps'
+// aim (finish/move_limits.hpp) or under the mesh's worst, else below the higher of those: the fit
+// never lowers θmin or Qmin, nor a triangle under the aim. The connectivity does not change.
+// Deterministic, whatever the thread count.
 SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
-                          std::vector<bool> movable, int rounds,
-                          const std::vector<double>& narrow_at = {});
+                          std::vector<bool> movable, int rounds);
 
 }  // namespace cvtmesh
