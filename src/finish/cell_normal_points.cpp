@@ -6,13 +6,12 @@
 #include <map>
 #include <optional>
 
+#include "cvtmesh/rvd_consumers.hpp"
 #include "features/edge_uses.hpp"
-#include "finish/move_limits.hpp"
+#include "finish/shape_floors.hpp"
 #include "finish/undo_moves.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
-#include "geometry/unit_vector.hpp"
-#include "quality/min_shape.hpp"
 
 namespace cvtmesh {
 
@@ -49,30 +48,14 @@ std::size_t move_onto_cell_normals(TriangleMesh& mesh, const std::vector<Vec3>& 
             projector.along(cell.centroid, cell.normal, kReach * shortest[v]))
       to[v] = cell.centroid + *t * cell.normal;
   });
-  // Each triangle's floors and normal before the moves: its own shape, or the aim where it is
-  // better, and never under the mesh's worst (θmin and Qmin do not fall).
-  std::vector<MinShape> floor(nt);
-  std::vector<Vec3> normal(nt);
-  MinShape worst{1, 180};
-  for (std::size_t t = 0; t < nt; ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    floor[t] = min_shape(a, b, c);
-    worst = {std::min(worst.quality, floor[t].quality),
-             std::min(worst.min_angle, floor[t].min_angle)};
-    normal[t] = unit_normal(a, b, c);
-  }
-  const MinShape aim{std::max(kAimQuality, worst.quality), std::max(kAimAngleDeg, worst.min_angle)};
-  for (MinShape& f : floor)
-    f = {std::min(f.quality, aim.quality), std::min(f.min_angle, aim.min_angle)};
+  // Each triangle's floor and normal before the moves.
+  const std::vector<MinShape> floor = shape_floors(mesh);
+  const std::vector<Vec3> normal = unit_normals(mesh);
   const std::vector<Vec3> before = mesh.vertices;
   for (std::size_t v = 0; v < nv; ++v)
     if (to[v]) mesh.vertices[v] = *to[v];
-  undo_moves_unless(mesh, before, [&](std::size_t t) {
-    const auto [a, b, c] = mesh.corners(t);
-    const MinShape s = min_shape(a, b, c);
-    return s.min_angle >= floor[t].min_angle && s.quality >= floor[t].quality &&
-           dot(unit_normal(a, b, c), normal[t]) >= kMaxShiftTurnCos;
-  });
+  undo_moves_unless(mesh, before,
+                    [&](std::size_t t) { return keeps_shape(mesh, t, floor[t], normal[t]); });
   std::size_t moved = 0;
   for (std::size_t v = 0; v < nv; ++v) moved += mesh.vertices[v] != before[v];
   return moved;

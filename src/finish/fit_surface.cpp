@@ -7,12 +7,14 @@
 #include <cmath>
 #include <optional>
 
+#include "cvtmesh/rvd_consumers.hpp"
 #include "features/edge_uses.hpp"
-#include "finish/move_limits.hpp"
+#include "finish/shape_floors.hpp"
 #include "finish/undo_moves.hpp"
 #include "geometry/shortest_edges.hpp"
 #include "geometry/surface_projector.hpp"
-#include "quality/min_shape.hpp"
+#include "geometry/unit_vector.hpp"
+#include "geometry/vertex_normals.hpp"
 
 namespace cvtmesh {
 
@@ -60,22 +62,6 @@ EdgeIds edge_ids(const TriangleMesh& mesh) {
   return ids;
 }
 
-Vec3 unit(const Vec3& v) {
-  const double n = norm(v);
-  return n > 0 ? (1 / n) * v : Vec3{0, 0, 0};
-}
-
-std::vector<Vec3> vertex_normals(const TriangleMesh& mesh) {
-  std::vector<Vec3> n(mesh.vertices.size(), Vec3{0, 0, 0});
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    const Vec3 area2 = cross(b - a, c - a);  // area-weighted
-    for (const Index v : mesh.triangles[t]) n[v] += area2;
-  }
-  for (Vec3& x : n) x = unit(x);
-  return n;
-}
-
 // Per vertex, the weighted mean distance along its normal from its triangles' sample points to
 // the surface (0 where the vertex is not movable). Each sample's distance is taken along its own
 // normal (the mean of its vertices'), to the nearest crossing within kRayReach of its vertex's
@@ -105,7 +91,7 @@ std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
     const auto [a, b] = edges.ends[e];
     if (!movable[a] && !movable[b]) return;
     const Vec3 p = 0.5 * (x[a] + x[b]);
-    const Vec3 n = unit(normal[a] + normal[b]);
+    const Vec3 n = unit_or_zero(normal[a] + normal[b]);
     to_midpoint[e] = to_surface(p, n, std::max(shortest[a], shortest[b]));
   });
   tbb::parallel_for(std::size_t{0}, nt, [&](std::size_t t) {
@@ -113,7 +99,7 @@ std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
     if (!movable[f[0]] && !movable[f[1]] && !movable[f[2]]) return;
     const auto c = mesh.corners(t);
     const Vec3 p = (1.0 / 3) * (c[0] + c[1] + c[2]);
-    const Vec3 n = unit(normal[f[0]] + normal[f[1]] + normal[f[2]]);
+    const Vec3 n = unit_or_zero(normal[f[0]] + normal[f[1]] + normal[f[2]]);
     to_centroid[t] = to_surface(p, n, std::max({shortest[f[0]], shortest[f[1]], shortest[f[2]]}));
   });
   std::vector<double> sum(nv, 0), weight(nv, 0);
@@ -140,37 +126,6 @@ std::vector<double> mean_offsets(const TriangleMesh& mesh, const EdgeIds& edges,
   return offset;
 }
 
-// Whether triangle t, as it is now, stays above its floor and turned less than kMaxShiftTurnCos
-// from `before` (its unit normal before the round).
-bool acceptable(const TriangleMesh& mesh, std::size_t t, const Vec3& before,
-                const MinShape& floor) {
-  const auto [a, b, c] = mesh.corners(t);
-  const MinShape s = min_shape(a, b, c);
-  return s.min_angle >= floor.min_angle && s.quality >= floor.quality &&
-         dot(unit(cross(b - a, c - a)), before) >= kMaxShiftTurnCos;
-}
-
-// Per triangle, the shape it may not fall below: its own, where that is under the aim of the
-// sweeps (kAimAngleDeg, kAimQuality) or under the worst triangle's, else the higher of those two,
-// as cell_normal_points and snap_to_creases hold them. Held to the worst triangle alone, the
-// moves took the others down to it where one was far worse, at one of the input's narrow angles
-// or at a part thinner than the edges (lion.off at 5k, an 8° input angle and a 13.7° triangle
-// there: θmin away from it 39.4° -> 34.1°; femur.off at 5k 37.8° -> 34.6°).
-std::vector<MinShape> shape_floors(const TriangleMesh& mesh) {
-  std::vector<MinShape> own(mesh.triangles.size());
-  MinShape worst{1, 180};
-  for (std::size_t t = 0; t < own.size(); ++t) {
-    const auto [a, b, c] = mesh.corners(t);
-    own[t] = min_shape(a, b, c);
-    worst.min_angle = std::min(worst.min_angle, own[t].min_angle);
-    worst.quality = std::min(worst.quality, own[t].quality);
-  }
-  const MinShape aim{std::max(kAimQuality, worst.quality), std::max(kAimAngleDeg, worst.min_angle)};
-  for (MinShape& s : own)
-    s = {std::min(s.quality, aim.quality), std::min(s.min_angle, aim.min_angle)};
-  return own;
-}
-
 }  // namespace
 
 SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
@@ -180,18 +135,14 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
   const EdgeIds edges = edge_ids(mesh);
   for (std::size_t e = 0; e < edges.ends.size(); ++e)
     if (edges.not_interior[e]) movable[edges.ends[e][0]] = movable[edges.ends[e][1]] = false;
-  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
+  const std::size_t nv = mesh.vertices.size();
   const std::vector<double> shortest = shortest_edges(mesh);
   const std::vector<Vec3> start = mesh.vertices;
   for (int round = 0; round < rounds; ++round) {
     // As each round starts: no round takes back what an earlier one gained.
     const std::vector<MinShape> floors = shape_floors(mesh);
-    const std::vector<Vec3> normal = vertex_normals(mesh);
-    std::vector<Vec3> face_normal(nt);
-    for (std::size_t t = 0; t < nt; ++t) {
-      const auto [a, b, c] = mesh.corners(t);
-      face_normal[t] = unit(cross(b - a, c - a));
-    }
+    const std::vector<Vec3> normal = unit_vertex_normals(mesh);
+    const std::vector<Vec3> face_normal = unit_normals(mesh);
     const std::vector<double> offset =
         mean_offsets(mesh, edges, surface, movable, normal, shortest);
     const std::vector<Vec3> before = mesh.vertices;
@@ -206,7 +157,7 @@ SurfaceFit fit_to_surface(TriangleMesh& mesh, const SurfaceProjector& surface,
     }
     // Undo the moves at triangles that got worse than the floors.
     undo_moves_unless(mesh, before, [&](std::size_t t) {
-      return acceptable(mesh, t, face_normal[t], floors[t]);
+      return keeps_shape(mesh, t, floors[t], face_normal[t]);
     });
   }
   for (std::size_t v = 0; v < nv; ++v)
