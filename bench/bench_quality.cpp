@@ -1,12 +1,12 @@
 // Hot paths of the quality report: topology analysis, per-triangle metrics, Hausdorff distance
 // and mesh reading; the walk of a mesh's edges that feature detection, components, topology
-// control and the finishing steps share (edge_uses); and the passes over the whole input before
-// the CVT starts (repair, feature detection), on one thread while the other builds the AABB tree,
-// so that a large scan's remesh to a few thousand vertices spends a third of its time there
-// (igea.ply at 1k); on generated meshes (icosphere level 6 =
-// 81,920 triangles, level 7 = 327,680, about igea's size). Compare a figure against
-// `BM_SurfaceArea` of the same size, the cheapest possible pass over the triangles, run in the same
-// process.
+// control and the finishing steps share (edge_uses); the search for triangles through others that
+// checks every output; and the passes over the whole input before the CVT starts (repair, feature
+// detection), on one thread while the other builds the AABB tree, so that a large scan's remesh
+// to a few thousand vertices spends a third of its time there (igea.ply at 1k); on generated
+// meshes (icosphere level 6 = 81,920 triangles, level 7 = 327,680, about igea's size). Compare a
+// figure against `BM_SurfaceArea` of the same size, the cheapest possible pass over the
+// triangles, run in the same process.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -19,6 +19,7 @@
 #include "cvtmesh/repair.hpp"
 #include "cvtmesh/topology.hpp"
 #include "features/edge_uses.hpp"
+#include "geometry/self_crossings.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
@@ -85,6 +86,16 @@ void BM_MeasureQuality(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
 }
 BENCHMARK(BM_MeasureQuality)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
+
+// The search for triangles that pass through others (geometry/self_crossings), which topology
+// control runs on its extractions and the finishing steps on every output: on a closed sphere,
+// where every pair it tests shares a vertex or an edge, as on nearly every output.
+void BM_SelfCrossings(benchmark::State& state) {
+  const TriangleMesh& m = sphere(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(self_crossing_triangles(m));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(m.triangles.size()));
+}
+BENCHMARK(BM_SelfCrossings)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 
 // Sphere level 6 against a 1% larger level-5 sphere; range(0) = samples per surface.
 void BM_Hausdorff(benchmark::State& state) {

@@ -5,7 +5,8 @@ defaults, at each requested vertex count, and print one row per run (issue 18).
 Each row: manifold output, same topology as the input (components, Euler characteristic and
 boundary loops per the quality report), seeds added by topology control, θmin, Qmin, % of
 triangles under 30°, Hausdorff mean and max (% of the bbox diagonal), feature distance, corners
-kept, wall time and peak memory. With ../shared/tools/vorpalite-iso present, vorpalite's row for
+kept, wall time and peak memory; the totals count the outputs whose triangles pass through one
+another where the input does not. With ../shared/tools/vorpalite-iso present, vorpalite's row for
 the same input and count follows ours, measured by `cvtmesh quality --ref`.
 
     bench/corpus.py [--counts 1000,5000,10000] [--jobs J] [--threads T] [--no-vorpalite] [--only NAME,...]
@@ -125,6 +126,10 @@ def run_cvtmesh(exe, mesh, n, timeout, extra, measure_hausdorff, threads=1):
             "seeds_added": j.get("seeds_added", j.get("islands_seeded", 0)),
             "theta_min_away": j.get("angle_min_away_deg"), "q_min_away": j.get("q_min_away"),
             "feature_max": j.get("feature_hausdorff_max_pct"),
+            # Output triangles through others away from where the input crosses itself, and
+            # whether the input crosses itself anywhere (then its output cannot be embedded).
+            "crossing": j.get("output_crossing_triangles", 0),
+            "input_crossing": j.get("input_crossing_triangles", 0),
             "corners": f'{j.get("corners_out", 0)}/{j.get("corners_in", 0)}',
             # What topology control adds to the rest of the remesh (issue 18: at most 25% at
             # the median).
@@ -264,9 +269,10 @@ def main():
     add_common_arguments(p)
     p.add_argument("--require-valid", action="store_true",
                    help="exit 1 unless every cvtmesh run succeeds with a manifold output (or the "
-                        "non-manifold input's own edges kept), the input's topology and no "
-                        "triangle of zero area (the test suite's guard); exit 77 (CTest's skip) "
-                        "without the shared data")
+                        "non-manifold input's own edges kept), the input's topology, no "
+                        "triangle of zero area and, where the input does not pass through "
+                        "itself, no triangle through another (the test suite's guard); exit 77 "
+                        "(CTest's skip) without the shared data")
     a, extra = p.parse_known_args()  # anything else goes to `cvtmesh remesh`
 
     exe = str(Path(a.build) / "apps" / "cvtmesh" / "cvtmesh")
@@ -311,6 +317,12 @@ def main():
           f"same topology {sum(r['same_topology'] for r in ok)}/{len(ours)}, "
           f"θmin < 10°: {sum(r['theta_min'] < 10 for r in ok)}, "
           f"seeds added {sum(r.get('seeds_added') or 0 for r in ok)}")
+    crossing = sorted((name, n, r["crossing"]) for (name, n, tool), r in results.items()
+                      if tool == "cvtmesh" and "error" not in r and r["crossing"] > 0 and
+                      r["input_crossing"] == 0)
+    print(f"outputs whose triangles pass through one another where the input does not cross "
+          f"itself: {len(crossing)}"
+          + "".join(f", {name} {n} ({c} triangles)" for name, n, c in crossing))
     added = sorted((r["topology_added"], name, n) for (name, n, tool), r in results.items()
                    if tool == "cvtmesh" and "error" not in r)
     if added:
@@ -319,11 +331,12 @@ def main():
               f"{100 * added[len(added) // 2][0]:.1f}%, most {worst}")
     # A smallest angle under 0.001° is a triangle of numerically zero area (two vertices a
     # rounding apart made femur.off's at 10k: 2e-12°), which the manifold guarantee excludes.
-    if a.require_valid and (len(ok) < len(ours) or
+    if a.require_valid and (len(ok) < len(ours) or crossing or
                             not all(r["manifold"] and r["same_topology"] and r["theta_min"] >= 1e-3
                                     for r in ok)):
-        sys.exit("corpus.py: some outputs are not manifold, lost the input's topology or have a "
-                 "triangle of zero area, or some runs failed (rows above)")
+        sys.exit("corpus.py: some outputs are not manifold, lost the input's topology, have a "
+                 "triangle of zero area or triangles through one another where the input has "
+                 "none, or some runs failed (rows above)")
     if use_vorpalite:
         better, both, ratios = 0, 0, []
         shape_lost, kept_shape, better_kept, better_away = 0, 0, 0, 0

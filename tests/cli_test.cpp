@@ -553,6 +553,8 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "flat_ears_removed",
                           "flat_pairs_merged",
                           "input_crossing_triangles",
+                          "output_crossing_triangles",
+                          "vertices_guarded",
                           "mend_rounds",
                           "shape_flips",
                           "shape_moves",

@@ -164,6 +164,16 @@ int run_remesh(RemeshOptions o) {
                "topology, or left its boundary loops and creases too few\n",
                o.output, r.count_grown);
   if (!report.same_topology_as_reference) warn_about_topology(o.output, report.topology);
+  if (r.output_crossing_triangles > 0 && r.input_crossing_triangles == 0)
+    fmt::print(stderr,
+               "{}: warning: {} output triangles pass through others: more vertices would "
+               "resolve the thin parts there\n",
+               o.output, r.output_crossing_triangles);
+  else if (r.output_crossing_triangles > 0)
+    fmt::print(stderr,
+               "{}: warning: {} output triangles pass through others away from where the input "
+               "passes through itself ({} input triangles)\n",
+               o.output, r.output_crossing_triangles, r.input_crossing_triangles);
   if (r.input_crossing_triangles > 0 && !report.same_topology_as_reference)
     fmt::print(stderr,
                "{}: warning: the input passes through itself ({} triangle{} cross{} another): no "

@@ -183,6 +183,13 @@ struct RemeshResult {
   // cells at any spacing, so the topology there cannot be the input's, and the rounds stop
   // refining there.
   std::size_t input_crossing_triangles = 0;
+  // Output triangles that pass through another where the input does not pass through itself
+  // (issue 18: a valid output): topology control refines where its extractions cross
+  // themselves, and where the finishing steps made crossings, they are run again with each change
+  // around them checked for crossings (`vertices_guarded`: how many vertices that guarded). Not 0
+  // only where neither removed them all, within the rounds' caps.
+  std::size_t output_crossing_triangles = 0;
+  std::size_t vertices_guarded = 0;
   // Flat or folded ears removed at the boundary (finish/flat_ears): triangles whose two edges at
   // one vertex, not a corner, were boundary edges meeting at 160° or more (120° at a vertex that
   // is no seed: a cell's far piece), or that folded back more than 120° over their neighbour

@@ -68,12 +68,14 @@ std::vector<Edge> traced_edges(const std::vector<FeatureLink>& links,
 
 // Per output vertex, where improve_shapes may move it: a curve seed along its curve; a corner,
 // or any other end of a traced feature edge, nowhere; the rest on the surface. Every vertex at a
-// corner is one (a pinch: one vertex per sheet that touches there, welded later).
+// corner is one (a pinch: one vertex per sheet that touches there, welded later). The vertices
+// at `guarded` are guarded.
 std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
                                            const std::map<Vec3, Index>& id,
                                            const std::vector<Vec3>& seeds,
                                            const SeedConstraints& constraints,
-                                           const std::vector<Edge>& feature_edges) {
+                                           const std::vector<Edge>& feature_edges,
+                                           const std::set<Vec3>& guarded) {
   using Kind = VertexSupport::Kind;
   std::vector<VertexSupport> support(output.vertices.size());
   for (const Edge& e : feature_edges) support[e[0]].kind = support[e[1]].kind = Kind::fixed;
@@ -85,8 +87,10 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
       }
   std::set<Vec3> corners;
   for (const Index s : constraints.corner_seed) corners.insert(seeds[s]);
-  for (Index v = 0; v < output.vertices.size(); ++v)
+  for (Index v = 0; v < output.vertices.size(); ++v) {
     if (corners.contains(output.vertices[v])) support[v].kind = Kind::fixed;
+    support[v].guarded = guarded.contains(output.vertices[v]);
+  }
   return support;
 }
 
@@ -152,7 +156,7 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    const SeedConstraints& constraints, const Features& features,
                    const CurveProjector& curves, const TriangleMesh& surface,
                    const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
-                   const RemeshSettings& settings) {
+                   const RemeshSettings& settings, const std::set<Vec3>& guarded) {
   // The mesh's first vertices are the seeds, by id (PolishedOutput).
   std::vector<bool> corners(result.mesh.vertices.size(), false), seedless(corners.size(), false);
   for (const Index s : constraints.corner_seed) corners[s] = true;
@@ -174,11 +178,13 @@ void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
   }
   // Last, as it moves vertices off the seeds' positions (which the matching above needs).
   std::vector<VertexSupport> supports =
-      vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges);
-  // The surface vertices: those that the finishing steps may move or remove.
+      vertex_supports(result.mesh, output_id, seeds, constraints, result.feature_edges, guarded);
+  // The surface vertices: those that the finishing steps may move or remove; not the guarded
+  // ones, which only improve_shapes moves, checked for crossings.
   const auto removable_in = [](const std::vector<VertexSupport>& of) {
     std::vector<bool> removable;
-    for (const VertexSupport& s : of) removable.push_back(s.kind == VertexSupport::Kind::surface);
+    for (const VertexSupport& s : of)
+      removable.push_back(s.kind == VertexSupport::Kind::surface && !s.guarded);
     return removable;
   };
   // Before the sweeps, which mend the shapes the moves leave.

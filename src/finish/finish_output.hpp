@@ -7,6 +7,7 @@
 // (snap_to_creases), and the fit to the input.
 #pragma once
 
+#include <set>
 #include <vector>
 
 #include "cvtmesh/remesh.hpp"
@@ -23,12 +24,14 @@ class SurfaceProjector;
 // vertices stay at the seeds, as with no fit). Fills `result`'s counts of what each step did, its
 // feature edges, and the vertices added. `narrow`: the input's angles under 30° between features;
 // the triangles at those the output traces are held to them in the last sweeps (improve_shapes).
-// `surface`: the input that `projector` projects onto, in the ids of `features`.
+// `surface`: the input that `projector` projects onto, in the ids of `features`. The vertices of
+// `result.mesh` at `guarded` are guarded (VertexSupport): the sweeps check each change there for
+// crossings, and no other step moves or removes them (crossing_guard).
 void finish_output(RemeshResult& result, const std::vector<Vec3>& seeds,
                    std::size_t optimized_seeds, const std::vector<CellNormal>& cells,
                    const SeedConstraints& constraints, const Features& features,
                    const CurveProjector& curves, const TriangleMesh& surface,
                    const SurfaceProjector& projector, const std::vector<NarrowAngle>& narrow,
-                   const RemeshSettings& settings);
+                   const RemeshSettings& settings, const std::set<Vec3>& guarded = {});
 
 }  // namespace cvtmesh

@@ -17,6 +17,7 @@
 #include "finish/surface_gap.hpp"
 #include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
+#include "geometry/self_crossings.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/triangles_around.hpp"
 #include "geometry/unit_vector.hpp"
@@ -552,8 +553,55 @@ class ShapeImprover {
     after.add(p[c], p[a], p[d]);
     after.add(p[d], p[b], p[c]);
     if (!after.better_than(before, floor_) || !flip_keeps_surface(*q)) return false;
+    if (flip_crosses(*q)) return false;
     flip(*q);
     return true;
+  }
+
+  // Whether flipping quad `q` would pass a triangle through another, where one of its vertices
+  // is guarded.
+  bool flip_crosses(const Quad& q) {
+    const auto [t1, t2, a, b, c, d] = q;
+    if (std::ranges::none_of(std::array{a, b, c, d}, [&](Index v) { return support_[v].guarded; }))
+      return false;
+    const Triangle f1 = mesh_.triangles[t1], f2 = mesh_.triangles[t2];
+    mesh_.triangles[t1] = {c, a, d};
+    mesh_.triangles[t2] = {d, b, c};
+    const bool crosses = crosses_another(std::array{t1, t2});
+    mesh_.triangles[t1] = f1;
+    mesh_.triangles[t2] = f2;
+    return crosses;
+  }
+
+  // Whether a triangle of `changed` passes through another (triangles_cross). Every triangle is
+  // looked at, as sheets far apart along the mesh can be close in space (a plate a tenth of an
+  // edge thick, its two faces nine rings apart): only guarded vertices ask, and only where the
+  // finishing steps made crossings (crossing_guard), so a search structure kept up to date
+  // through every flip, move, collapse and undo would cost more than it saves.
+  template <class Triangles>
+  bool crosses_another(const Triangles& changed) const {
+    const std::vector<Vec3>& p = mesh_.vertices;
+    const auto box = [&](Index t) {
+      const Triangle& f = mesh_.triangles[t];
+      std::array<Vec3, 2> b{p[f[0]], p[f[0]]};
+      for (const Index v : f) {
+        b[0] = {std::min(b[0].x, p[v].x), std::min(b[0].y, p[v].y), std::min(b[0].z, p[v].z)};
+        b[1] = {std::max(b[1].x, p[v].x), std::max(b[1].y, p[v].y), std::max(b[1].z, p[v].z)};
+      }
+      return b;
+    };
+    for (const Index t : changed) {
+      const auto [lo, hi] = box(t);
+      for (Index s = 0; s < mesh_.triangles.size(); ++s) {
+        if (gone_[s] || std::ranges::find(changed, s) != changed.end()) continue;
+        const auto [slo, shi] = box(s);
+        if (slo.x > hi.x || slo.y > hi.y || slo.z > hi.z || shi.x < lo.x || shi.y < lo.y ||
+            shi.z < lo.z)
+          continue;
+        if (triangles_cross(mesh_, mesh_.triangles[t], mesh_.triangles[s])) return true;
+      }
+    }
+    return false;
   }
 
   // A flip that try_flip would not take, since its own two triangles are no better at once: one
@@ -585,7 +633,7 @@ class ShapeImprover {
       const double flipped = valence + (k < 2 ? -1 : 1);
       off_after += (flipped - ideal) * (flipped - ideal);
     }
-    if (off_after >= off_before || !flip_keeps_surface(*q)) return false;
+    if (off_after >= off_before || !flip_keeps_surface(*q) || flip_crosses(*q)) return false;
     // The quad's vertices and their neighbours move: the four alone often cannot even out the
     // angles that the new valences ask for.
     const Region region = region_at(quad);
@@ -774,6 +822,7 @@ class ShapeImprover {
       const Vec3 n = unit_normal(u, v, w);
       kept = !no_direction(n) && dot(n, normals[k]) >= kTurnCos;
     }
+    if (kept && (support_[x].guarded || support_[y].guarded)) kept = !crosses_another(around_[y]);
     if (kept && settled(region, std::array{y}, done)) return true;
     for (std::size_t k = 0; k < at_x.size(); ++k) {
       mesh_.triangles[at_x[k]] = old_triangles[k];
@@ -807,7 +856,8 @@ class ShapeImprover {
     const auto better_at = [&](const Vec3& q) {
       p[v] = q;
       WorstShape now;
-      const bool better = star_better_than(v, best, now) && keeps_surface(v, normals);
+      const bool better = star_better_than(v, best, now) && keeps_surface(v, normals) &&
+                          !(support_[v].guarded && crosses_another(around_[v]));
       p[v] = from;
       if (better) best = now;
       return better;

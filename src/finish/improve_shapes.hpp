@@ -31,6 +31,9 @@ struct VertexSupport {
   enum class Kind : std::uint8_t { surface, curve, fixed };
   Kind kind = Kind::surface;
   std::uint32_t curve = 0;  // for Kind::curve: its index in the CurveProjector
+  // Every change here is also checked for triangles that pass through others (finish/
+  // crossing_guard: where the finishing steps made the output cross itself before).
+  bool guarded = false;
 };
 
 struct ShapeImprovement {
@@ -52,7 +55,8 @@ struct ShapeImprovement {
 // exactly two triangles, which use them in opposite directions. A collapse takes one surface
 // vertex, or a curve vertex along its curve (`feature_edges` then run from the vertex it merged
 // into), out of the triangles, leaving it unused; at most one vertex in 100 goes so. Each change
-// keeps the triangles it touches about as close to the surface as they were. Sequential, in a fixed
+// keeps the triangles it touches about as close to the surface as they were, and at a guarded
+// vertex, passes none of them through another triangle. Sequential, in a fixed
 // order: the result does not depend on the thread count. `narrow_at` (per vertex; missing ones 0)
 // gives the input angle under 30° of a tip the output traces at that vertex: a triangle there is
 // judged by its smallest angle against that angle, as the quality promise judges it (issue 18

@@ -4,6 +4,7 @@
 
 #include "cvtmesh/quality.hpp"
 #include "features/edge_uses.hpp"
+#include "geometry/self_crossings.hpp"
 #include "remesh/flip_links.hpp"
 #include "remesh/last_step.hpp"
 #include "remesh/mend_topology.hpp"
@@ -107,7 +108,8 @@ SpecialEdges special_edges(const MendContext& m) {
 }
 
 Assessment assess(const MendContext& m, const SpecialEdges& special, const TriangleMesh& rdt,
-                  const std::vector<Vec3>& seeds, const SeedConstraints& constraints) {
+                  const std::vector<Vec3>& seeds, const SeedConstraints& constraints,
+                  InputCrossings& crossings) {
   Assessment a;
   a.finished = rdt;
   std::vector<FeatureLink> cut;
@@ -153,14 +155,25 @@ Assessment assess(const MendContext& m, const SpecialEdges& special, const Trian
     a.topology_kept = a.defects.empty() && same_topology(t, in);
     a.rescued = a.topology_kept;  // no last step for a non-manifold input
   }
+  // Not where the input crosses itself anywhere: its output cannot be embedded, and refining
+  // where it crosses beside the input's crossings only cost seeds (camel.off at 10k, 20 input
+  // triangles crossing: 58 seeds more, 3 s, for 20 output triangles crossing where 48 did).
+  if (a.topology_kept) {
+    a.crossing = crossings_of_its_own(a.finished, crossings);
+    if (crossings.found()) a.crossing.clear();
+  }
   std::vector<bool> used(a.finished.vertices.size(), false);
   for (const Triangle& tri : a.finished.triangles)
     for (const Index v : tri) used[v] = true;
   const auto corners = static_cast<std::size_t>(std::count_if(constraints.corner_seed.begin(),
                                                               constraints.corner_seed.end(),
                                                               [&](Index s) { return used[s]; }));
-  a.score = {a.topology_kept, -static_cast<std::ptrdiff_t>(a.defects.triangles.size()), corners,
-             -static_cast<std::ptrdiff_t>(unmade.size()), measure_quality(a.finished).q_min};
+  a.score = {a.topology_kept,
+             -static_cast<std::ptrdiff_t>(a.defects.triangles.size()),
+             -static_cast<std::ptrdiff_t>(a.crossing.size()),
+             corners,
+             -static_cast<std::ptrdiff_t>(unmade.size()),
+             measure_quality(a.finished).q_min};
   return a;
 }
 

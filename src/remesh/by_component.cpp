@@ -425,6 +425,8 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.triangles_closing_holes += part.triangles_closing_holes;
   all.vertices_closing_holes += part.vertices_closing_holes;
   all.input_crossing_triangles += part.input_crossing_triangles;
+  all.output_crossing_triangles += part.output_crossing_triangles;
+  all.vertices_guarded += part.vertices_guarded;
   all.flat_ears_removed += part.flat_ears_removed;
   all.flat_pairs_merged += part.flat_pairs_merged;
   all.valence_three_removed += part.valence_three_removed;

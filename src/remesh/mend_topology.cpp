@@ -152,32 +152,6 @@ class KeptRounds {
   std::optional<Round> best_rescued_;
 };
 
-// Where the input's triangles cross one another: searched only once an output lacks the input's
-// topology (searched for every run, it added about 0.3 s to igea's 2.2 s at 10k).
-class Crossings {
- public:
-  explicit Crossings(const TriangleMesh& surface) : surface_(surface) {}
-  // The crossings, searched on the first call; null where there are none.
-  const SurfaceProjector* get() {
-    if (!searched_) {
-      const std::vector<bool> crossing = self_crossing_triangles(surface_);
-      count_ = static_cast<std::size_t>(std::count(crossing.begin(), crossing.end(), true));
-      found_ = crossing_surface(surface_, crossing);
-      searched_ = true;
-    }
-    return found_.get();
-  }
-  // Whether a search found any; how many triangles cross another (0 before a search).
-  bool found() const { return found_ != nullptr; }
-  std::size_t count() const { return count_; }
-
- private:
-  const TriangleMesh& surface_;
-  bool searched_ = false;
-  std::size_t count_ = 0;
-  std::unique_ptr<SurfaceProjector> found_;
-};
-
 // New surface seeds at the nearest surface points of `points`, unless a seed is there already,
 // or one of those added since `first_new` is nearer than a millionth of the spacing: two pieces'
 // farthest points may be the same RVD vertex computed from two cells, a rounding apart, and two
@@ -202,20 +176,6 @@ std::size_t add_surface_seeds(const MendContext& m, const std::vector<Vec3>& poi
   return added;
 }
 
-// Whether the triangle of seeds `t` is at a crossing of the input's sheets: one reaches the
-// ball around its centroid whose radius is its longest edge. Refining there only makes smaller
-// defects, round after round (man.off at 2k, --seed 2: 2,415 seeds added and θmin 0.4° where the
-// pinned rounds refined there; 415 and 16.8°, the last step closing one hole, where they do not).
-// The first rounds still refine there: a thin part next to a crossing needs it (man.off and
-// cow.off at 1k lost their topology without).
-bool at_crossing(const SurfaceProjector& crossings, const std::vector<Vec3>& seeds,
-                 const Triangle& t) {
-  const Vec3 &a = seeds[t[0]], &b = seeds[t[1]], &c = seeds[t[2]];
-  const Vec3 centre = (1.0 / 3) * (a + b + c);
-  const double reach = std::max({distance(a, b), distance(b, c), distance(c, a)});
-  return crossings.distance_to(centre) <= reach;
-}
-
 // Inserts seeds where the extraction fails the ball property (`a`; `vertex_seed`: per vertex of
 // the extraction, its seed): the cut links mended (mend_missing_links); and, where the topology
 // is not the input's, from the seeds as extracted (one RVD for both), a seed in each piece of a
@@ -224,7 +184,7 @@ bool at_crossing(const SurfaceProjector& crossings, const std::vector<Vec3>& see
 // how many seeds came in or moved.
 std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
                                 const std::vector<Index>& vertex_seed, bool pinned,
-                                Crossings& crossings, std::vector<Vec3>& seeds,
+                                InputCrossings& crossings, std::vector<Vec3>& seeds,
                                 SeedConstraints& constraints, MendReport& report) {
   // Out of time (issue 22), the rounds go on for the topology only: validity comes first.
   const bool out_of_time = m.placement.interrupt().out_of_time();
@@ -241,7 +201,11 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
       if (std::any_of(t.begin(), t.end(), [&](Index v) { return v >= vertex_seed.size(); }))
         continue;
       for (Index& v : t) v = vertex_seed[v];
-      // The pinned rounds do not refine at crossings either: the last step mends them.
+      // The pinned rounds do not refine at crossings either: the last step mends them. Refining
+      // there only makes smaller defects, round after round (man.off at 2k, --seed 2: 2,415 seeds
+      // added and θmin 0.4° where the pinned rounds refined there; 415 and 16.8°, the last step
+      // closing one hole, where they do not). The first rounds still refine there: a thin part
+      // next to a crossing needs it (man.off and cow.off at 1k lost their topology without).
       if (!pinned || !crossing || !at_crossing(*crossing, seeds, t)) dual.push_back(t);
     }
     // Cells that are no discs: in the first rounds only as a last resort, for an output whose
@@ -256,6 +220,20 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
                                          : SplitCells::near_triangles;
     found = defect_seeds(m.surface, seeds, dual,
                          m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing,
+                         m.extraction);
+  } else if (!a.crossing.empty()) {
+    // Triangles that pass through each other, the topology kept, the input crossing itself
+    // nowhere (assess): Delaunay refinement at them, as at defects (their surface Delaunay balls
+    // reach the sheet or tube wall they cross), and seeds in the split cells near them. Without
+    // the latter, couplingdown.off at 1k kept about 80 crossing triangles in the narrow holes of
+    // its rim for four rounds, and the rounds stopped; with them, none were left after five.
+    std::vector<Triangle> dual;
+    for (Triangle t : a.crossing)
+      if (std::all_of(t.begin(), t.end(), [&](Index v) { return v < vertex_seed.size(); })) {
+        for (Index& v : t) v = vertex_seed[v];
+        dual.push_back(t);
+      }
+    found = defect_seeds(m.surface, seeds, dual, false, SplitCells::near_triangles, nullptr,
                          m.extraction);
   }
   if (!a.missing.empty() && !out_of_time) {
@@ -306,12 +284,12 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   const SpecialEdges special = special_edges(m);
   KeptRounds kept;
   RoundStops stops(rounds, seeds.size());
-  Crossings crossings(m.surface);
+  InputCrossings crossings(m.surface);
   // Where the rounds end without the input's topology, they start again from the best round, for
   // three times as many rounds, with the seeds they add pinned (see kRoundsWithoutProgress).
   PolishSettings polish = m.polish;
   for (int round = 0;; ++round) {
-    Assessment a = assess(m, special, output.mesh, seeds, constraints);
+    Assessment a = assess(m, special, output.mesh, seeds, constraints, crossings);
     // An output not polished at once (polished_at_once) is polished before seeds are added to
     // it: unpolished, the cells of thin parts are in more pieces, and the seeds added there left
     // worse triangles (man.off adaptive at 2k: 103 islands where 38, 137 seeds added where 53,
@@ -328,7 +306,7 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
           failing_seeds(output.mesh, a.defects, output.vertex_seed, seeds.size());
       output = extract_polished(m.surface, seeds, m.placement, around_defects, m.extraction);
       report.polish_rounds += output.rounds;
-      a = assess(m, special, output.mesh, seeds, constraints);
+      a = assess(m, special, output.mesh, seeds, constraints, crossings);
     }
     // `output` is not read again before the next extraction replaces it, and the kept mesh is
     // the assessment's finished one: moved, not copied.

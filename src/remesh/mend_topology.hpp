@@ -37,8 +37,8 @@ struct MendReport {
   std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_wedges)
   int rounds = 0;                 // rounds that changed the seeds
   int polish_rounds = 0;          // polishing rounds over all the extractions after the first
-  // Input triangles that cross another, searched once an output lacked the input's topology
-  // (0 otherwise): where sheets cross, no seed tells them apart.
+  // Input triangles that cross another, searched once an output lacked the input's topology or
+  // crossed itself (0 otherwise): where sheets cross, no seed tells them apart.
   std::size_t crossing_triangles = 0;
 };
 
@@ -53,14 +53,15 @@ bool crosses_itself_widely(std::size_t crossing, std::size_t triangles);
 
 // Up to `rounds` times, while the output misses links of the feature chains, or its topology
 // differs from the surface's (non-manifold, or other components, Euler characteristic or
-// boundary loops): mends the links no single well-shaped edge flip makes (mend_missing_links),
-// puts a new surface seed in each extra piece of a cell near the defects (cell_islands,
-// defect_seeds), and extracts again
-// (polishing around the new seeds). Each extraction is finished as it would be returned: the
-// missing links flipped in where one edge flip makes them (flip_in_links; with no angle under
-// 30°, or, for links the seeds do not mend, 15°), and corners left without a triangle at a
-// boundary tip given theirs (close_corner_wedges). Returns the best of these outputs, by the
-// input's topology, then fewest non-manifold edges and vertices, then most corners, then fewest
+// boundary loops), or its triangles cross one another where the input's do not: mends the links no
+// single well-shaped edge flip makes (mend_missing_links), puts a new surface seed in each extra
+// piece of a cell near the defects (cell_islands, defect_seeds), refines at the crossing triangles,
+// and extracts again (polishing around the new seeds). Each extraction is finished as it would be
+// returned: the missing links flipped in where one edge flip makes them (flip_in_links; with no
+// angle under 30°, or, for links the seeds do not mend, 15°), and corners left without a triangle
+// at a boundary tip given theirs (close_corner_wedges). Returns the best of these outputs, by the
+// input's topology, then fewest non-manifold edges and vertices, then fewest crossing
+// triangles, then most corners, then fewest
 // links missing, then best Qmin (the latest of equals); seeds, constraints and report are as of
 // that round. Where the rounds end without the input's topology, up to 3 × `rounds` more start
 // from the best round: they also refine every cell piece that is not a disc and every split

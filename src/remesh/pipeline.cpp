@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include <tbb/task_group.h>
 
@@ -18,6 +19,7 @@
 #include "features/curve_lloyd.hpp"
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
+#include "finish/crossing_guard.hpp"
 #include "finish/finish_output.hpp"
 #include "geometry/even_spacing.hpp"
 #include "geometry/spread_samples.hpp"
@@ -43,6 +45,12 @@ constexpr std::size_t kMaxVertices = 50'000'000;
 // about four seeds either way, few enough that the curves keep the density CCVT gave them where it
 // differs (fully even spacing lost joint.off and triple_vierbein.obj 5-8° at 2k vertices).
 constexpr int kCurveLloydSteps = 30;
+
+// Where the finishing steps made the output cross itself: how many times they are run again,
+// guarding the extraction's vertices within kGuardReach, then twice and three times that, times
+// a crossing triangle's longest edge of its centroid (finish/crossing_guard).
+constexpr int kGuardAttempts = 3;
+constexpr double kGuardReach = 1.5;
 
 // `count` seeds spread about the target lengths apart (paper §4.1 draws them ∝ √ρ at random).
 std::vector<Vec3> seeds_by_size(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
@@ -330,8 +338,16 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.holes_closed = last.closed.holes;
   result.triangles_closing_holes = last.closed.triangles;
   result.vertices_closing_holes = last.closed.vertices;
-  finish_output(result, seeds, optimized_seeds, cells, constraints, features, *curves, mesh,
-                *projector, narrow_feature_angles(mesh, features, kNarrowAngleDeg), settings);
+  // Where the finishing steps made the output pass through itself, they are run again with the
+  // changes around the crossings checked (finish/crossing_guard).
+  const std::vector<NarrowAngle> narrow = narrow_feature_angles(mesh, features, kNarrowAngleDeg);
+  finish_uncrossed(
+      result, mesh,
+      [&](RemeshResult& r, const std::set<Vec3>& guarded) {
+        finish_output(r, seeds, optimized_seeds, cells, constraints, features, *curves, mesh,
+                      *projector, narrow, settings, guarded);
+      },
+      kGuardAttempts, kGuardReach);
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);

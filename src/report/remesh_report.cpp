@@ -48,6 +48,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["input_holes_left_open"] = filled.left_open;
   j["holes_closed"] = r.holes_closed;
   j["input_crossing_triangles"] = r.input_crossing_triangles;
+  j["output_crossing_triangles"] = r.output_crossing_triangles;
+  j["vertices_guarded"] = r.vertices_guarded;
   j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
@@ -173,6 +175,12 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   if (r.input_crossing_triangles > 0)
     text +=
         fmt::format("  input     {} triangles pass through others\n", r.input_crossing_triangles);
+  if (r.vertices_guarded > 0 || r.output_crossing_triangles > 0)
+    text += fmt::format(
+        "  crossings the finishing steps run again with their changes at {} vertices checked for "
+        "triangles that pass through others; {} output triangles still do where the input does "
+        "not\n",
+        r.vertices_guarded, r.output_crossing_triangles);
   return report;
 }
 

@@ -1,6 +1,7 @@
 #include "support/shapes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -303,6 +304,39 @@ TriangleMesh cylinder(int rings, int sectors) {
     m.triangles.push_back({bottom + 1, id(rings, s), id(rings, s + 1)});
   }
   return m;
+}
+
+TriangleMesh knife(double deg, int n) {
+  const double half = std::tan(deg * std::numbers::pi / 180 / 2);
+  // The profile: the edge at the origin, the back at x = 1, each side in n steps.
+  const std::array<std::array<double, 2>, 3> corner{{{0, 0}, {1, half}, {1, -half}}};
+  std::vector<std::array<double, 2>> profile;
+  for (int i = 0; i < 3; ++i) {
+    const auto& a = corner[i];
+    const auto& b = corner[(i + 1) % 3];
+    for (int k = 0; k < n; ++k)
+      profile.push_back({a[0] + (b[0] - a[0]) * k / n, a[1] + (b[1] - a[1]) * k / n});
+  }
+  const auto m = static_cast<Index>(profile.size());
+  TriangleMesh knife;
+  for (int j = 0; j <= n; ++j)
+    for (const auto& p : profile)
+      knife.vertices.push_back({p[0], static_cast<double>(j) / n, p[1]});
+  for (Index j = 0; j < static_cast<Index>(n); ++j)
+    for (Index i = 0; i < m; ++i) {
+      const Index a = j * m + i, b = j * m + (i + 1) % m;
+      knife.triangles.push_back({a, b, b + m});
+      knife.triangles.push_back({a, b + m, a + m});
+    }
+  for (const int j : {0, n}) {  // the ends, fans from the profile's centroid
+    const auto centre = static_cast<Index>(knife.vertices.size());
+    knife.vertices.push_back({2.0 / 3, static_cast<double>(j) / n, 0});
+    for (Index i = 0; i < m; ++i) {
+      const Index a = static_cast<Index>(j) * m + i, b = static_cast<Index>(j) * m + (i + 1) % m;
+      knife.triangles.push_back(j == 0 ? Triangle{centre, b, a} : Triangle{centre, a, b});
+    }
+  }
+  return knife;
 }
 
 TriangleMesh wedge_sheet(double deg, double radius, int rings, int across) {

@@ -35,6 +35,11 @@ TriangleMesh cylinder(int rings, int sectors);
 // by `at`: a flat sheet, a strip, a wedge.
 TriangleMesh mapped_grid(int nx, int ny, const std::function<Vec3(double, double)>& at);
 
+// A closed knife: the prism over a thin isosceles triangle, its edge of `deg` degrees along the
+// y axis from (0, 0, 0) to (0, 1, 0), its back at x = 1; each side of the profile in `n` steps,
+// `n` steps along y, the two ends fans from the profile's centroid.
+TriangleMesh knife(double deg, int n);
+
 // A flat sheet in z = 0 ending in a tip of `deg` degrees at the origin: the tip vertex, then
 // `rings` rings of `across` + 1 vertices out to `radius` (ring i, step j is vertex
 // wedge_sheet_vertex(i, j, across), at radius i / rings of `radius` and angle j / across of

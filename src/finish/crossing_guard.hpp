@@ -1,0 +1,35 @@
+// Where the finishing steps make the output pass through itself: their flips and moves, each
+// judged by the triangles it touches, can fold a triangle through another where the surface
+// turns sharply within a ring (spool.off at 5k, beside a concave crease: 4 crossing triangles
+// after the sweeps, 8 after the fit, from an extraction with none). There the steps are run
+// again with the extraction's vertices around the crossings guarded (VertexSupport::guarded):
+// each flip, move or collapse there is checked for crossings, and no other step moves them.
+#pragma once
+
+#include <functional>
+#include <set>
+#include <vector>
+
+#include "cvtmesh/remesh.hpp"
+
+namespace cvtmesh {
+
+// The finishing steps on `result` (its mesh the extraction), with the vertices at the points
+// given guarded.
+using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
+
+// Runs `finish` on `result`; then, while its output has crossing triangles of its own (not where
+// `input` crosses itself, crossings_of_its_own) that the extraction it started from did not
+// have, up to `attempts` times, runs it again on the extraction with the vertices around them
+// guarded (points_near_crossings, `reach` times the attempt's number), kept where that leaves
+// fewer. Sets `result.output_crossing_triangles` and `result.vertices_guarded`.
+void finish_uncrossed(RemeshResult& result, const TriangleMesh& input, const FinishSteps& finish,
+                      int attempts, double reach);
+
+// The vertices of `unfinished` (the extraction the finishing steps started from) within `reach`
+// times the longest edge of a `crossing` triangle of `finished` of its centroid, by position:
+// those to guard.
+std::set<Vec3> points_near_crossings(const TriangleMesh& unfinished, const TriangleMesh& finished,
+                                     const std::vector<Triangle>& crossing, double reach);
+
+}  // namespace cvtmesh

@@ -1,0 +1,111 @@
+// Where the finishing steps make the output pass through itself, they run again with the
+// vertices there guarded (finish/crossing_guard).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "finish/crossing_guard.hpp"
+#include "geometry/self_crossings.hpp"
+#include "support/shapes.hpp"
+
+namespace cvtmesh {
+namespace {
+
+using testing::mapped_grid;
+
+std::size_t crossing_triangles(const TriangleMesh& mesh) {
+  const std::vector<bool> crossing = self_crossing_triangles(mesh);
+  return static_cast<std::size_t>(std::count(crossing.begin(), crossing.end(), true));
+}
+
+// The unit square in 8 × 8 cells; its vertex 40 is at (0.5, 0.5).
+TriangleMesh grid() {
+  return mapped_grid(8, 8, [](double u, double v) { return Vec3{u, v, 0}; });
+}
+constexpr Index kCentre = 40;
+
+// `mesh` with vertex `v` moved 2.4 cells along x, past its neighbours: its triangles fold over
+// theirs.
+TriangleMesh folded(TriangleMesh mesh, Index v) {
+  mesh.vertices[v] += Vec3{0.3, 0, 0};
+  return mesh;
+}
+
+TEST(CrossingGuard, StepsThatFoldTheOutputRunAgainWithTheVerticesThereGuarded) {
+  const TriangleMesh input = grid();
+  ASSERT_EQ(input.vertices[kCentre], (Vec3{0.5, 0.5, 0}));
+  ASSERT_GT(crossing_triangles(folded(input, kCentre)), 0u);
+  RemeshResult result;
+  result.mesh = input;
+  int runs = 0;
+  std::size_t guarded_last = 0;
+  // A step that folds the centre unless it is guarded.
+  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>& guarded) {
+    ++runs;
+    guarded_last = guarded.size();
+    if (!guarded.contains(input.vertices[kCentre])) r.mesh = folded(r.mesh, kCentre);
+  };
+  finish_uncrossed(result, input, fold, 3, 1.5);
+  EXPECT_EQ(runs, 2);
+  EXPECT_EQ(result.output_crossing_triangles, 0u);
+  EXPECT_EQ(result.vertices_guarded, guarded_last);
+  EXPECT_GT(result.vertices_guarded, 0u);
+  EXPECT_EQ(result.mesh.vertices, input.vertices);
+}
+
+TEST(CrossingGuard, WhereGuardingDoesNotHelpTheFirstOutputStaysAndItsCrossingsAreCounted) {
+  const TriangleMesh input = grid();
+  RemeshResult result;
+  result.mesh = input;
+  int runs = 0;
+  // Folds the centre whatever is guarded: the attempt is no better, and the attempts stop.
+  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>&) {
+    ++runs;
+    r.mesh = folded(r.mesh, kCentre);
+  };
+  finish_uncrossed(result, input, fold, 3, 1.5);
+  EXPECT_EQ(runs, 2);
+  EXPECT_EQ(result.output_crossing_triangles, crossing_triangles(folded(input, kCentre)));
+  EXPECT_EQ(result.vertices_guarded, 0u);
+}
+
+TEST(CrossingGuard, CrossingsWhereTheInputOrTheExtractionCrossesRunNothingAgain) {
+  const TriangleMesh plain = grid(), crossing = folded(plain, kCentre);
+  const FinishSteps nothing = [](RemeshResult&, const std::set<Vec3>&) {};
+  int runs = 0;
+  const FinishSteps counted = [&](RemeshResult& r, const std::set<Vec3>& g) {
+    ++runs;
+    nothing(r, g);
+  };
+  // The input crosses itself there: so does its output, and that is no crossing of its own.
+  RemeshResult of_input;
+  of_input.mesh = crossing;
+  finish_uncrossed(of_input, crossing, counted, 3, 1.5);
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(of_input.output_crossing_triangles, 0u);
+  // The extraction crossed itself (topology control's rounds left it): counted, not guarded.
+  runs = 0;
+  RemeshResult of_extraction;
+  of_extraction.mesh = crossing;
+  finish_uncrossed(of_extraction, plain, counted, 3, 1.5);
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(of_extraction.output_crossing_triangles, crossing_triangles(crossing));
+  EXPECT_EQ(of_extraction.vertices_guarded, 0u);
+}
+
+TEST(CrossingGuard, PointsNearCrossingsAreTheExtractionsVerticesWithinTheReach) {
+  const TriangleMesh unfinished = grid(), finished = folded(unfinished, kCentre);
+  // The corner cell's first triangle, (0, 0), (1/8, 0), (1/8, 1/8): its longest edge is √2/8
+  // (0.177), its centroid (1/12, 1/24) 0.059 from (1/8, 0), 0.093 from the other two, 0.118 from
+  // (0, 1/8), 0.172 from (1/4, 0) and 0.186 from (1/4, 1/8).
+  const std::vector<Triangle> one{finished.triangles[0]};
+  EXPECT_EQ(points_near_crossings(unfinished, finished, one, 0.6),
+            (std::set<Vec3>{{0, 0, 0}, {0.125, 0, 0}, {0.125, 0.125, 0}}));
+  EXPECT_EQ(
+      points_near_crossings(unfinished, finished, one, 1.0),
+      (std::set<Vec3>{{0, 0, 0}, {0.125, 0, 0}, {0.125, 0.125, 0}, {0, 0.125, 0}, {0.25, 0, 0}}));
+}
+
+}  // namespace
+}  // namespace cvtmesh
