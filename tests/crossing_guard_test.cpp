@@ -70,7 +70,7 @@ TEST(CrossingGuard, WhereGuardingDoesNotHelpTheFirstOutputStaysAndItsCrossingsAr
   EXPECT_EQ(result.vertices_guarded, 0u);
 }
 
-TEST(CrossingGuard, CrossingsWhereTheInputOrTheExtractionCrossesRunNothingAgain) {
+TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfNothingRunsAgain) {
   const TriangleMesh plain = grid(), crossing = folded(plain, kCentre);
   const FinishSteps nothing = [](RemeshResult&, const std::set<Vec3>&) {};
   int runs = 0;
@@ -84,6 +84,20 @@ TEST(CrossingGuard, CrossingsWhereTheInputOrTheExtractionCrossesRunNothingAgain)
   finish_uncrossed(of_input, crossing, counted, 3, 1.5);
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(of_input.output_crossing_triangles, 0u);
+  // The input crosses itself elsewhere (folded at vertex 10, (1/8, 1/8)): its output cannot be
+  // embedded, and the crossings made at the centre are counted (those farther from the input's
+  // than their longest edges), not guarded.
+  runs = 0;
+  RemeshResult beside_input;
+  beside_input.mesh = plain;
+  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>&) {
+    ++runs;
+    r.mesh = folded(r.mesh, kCentre);
+  };
+  finish_uncrossed(beside_input, folded(plain, 10), fold, 3, 1.5);
+  EXPECT_EQ(runs, 1);
+  EXPECT_GT(beside_input.output_crossing_triangles, 0u);
+  EXPECT_EQ(beside_input.vertices_guarded, 0u);
   // The extraction crossed itself (topology control's rounds left it): counted, not guarded.
   runs = 0;
   RemeshResult of_extraction;

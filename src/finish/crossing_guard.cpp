@@ -31,7 +31,10 @@ void finish_uncrossed(RemeshResult& result, const TriangleMesh& input, const Fin
   InputCrossings input_crossings(input);
   std::vector<Triangle> crossing = crossings_of_its_own(result.mesh, input_crossings);
   result.output_crossing_triangles = crossing.size();
-  if (crossing.empty()) return;  // nearly every output: one search of its crossings
+  // Nearly every output: one search of its crossings. Nor where the input crosses itself, as
+  // topology control does not refine there either: its output cannot be embedded, and guarding
+  // cost camel.off at 5k 0.06% on its Hausdorff max for 4 more crossing triangles in all.
+  if (crossing.empty() || input_crossings.found()) return;
   std::unique_ptr<SurfaceProjector> before;
   if (!crossings_of_its_own(unfinished.mesh, input_crossings).empty())
     before = crossing_surface(unfinished.mesh, self_crossing_triangles(unfinished.mesh));
