@@ -179,9 +179,9 @@ struct RemeshResult {
   std::size_t holes_closed = 0, triangles_closing_holes = 0;
   std::size_t vertices_closing_holes = 0;  // centres of holes closed by a fan
   // Input triangles that pass through another of their component, found where an output lacked
-  // the input's topology (0 when none, or when no output did): sheets that cross share their
-  // cells at any spacing, so the topology there cannot be the input's, and the rounds stop
-  // refining there.
+  // the input's topology or passed through itself (0 when none, or when no output did either):
+  // sheets that cross share their cells at any spacing, so the topology there cannot be the
+  // input's, and the rounds stop refining there.
   std::size_t input_crossing_triangles = 0;
   // Output triangles that pass through another where the input does not pass through itself
   // (issue 18: a valid output): topology control refines where its extractions cross
