@@ -9,17 +9,17 @@ namespace cvtmesh {
 
 namespace {
 
-// The crossing triangles of `finished` (crossings_of_its_own) that are not at one of
-// `unfinished`'s own (at_crossing): where the extraction already crossed itself, which topology
-// control's rounds left, no guard on the finishing steps mends it, and guarding only keeps the
-// sweeps from the badly shaped triangles there.
-std::vector<Triangle> crossings_made(const TriangleMesh& finished, InputCrossings& input,
+// Of `crossing` (triangles of `finished`), those not at one of `unfinished`'s own crossings
+// (at_crossing): where the extraction already crossed itself, which topology control's rounds
+// left, no guard on the finishing steps mends it, and guarding only keeps the sweeps from the
+// badly shaped triangles there.
+std::vector<Triangle> crossings_made(std::vector<Triangle> crossing, const TriangleMesh& finished,
                                      const SurfaceProjector* unfinished) {
-  std::vector<Triangle> made = crossings_of_its_own(finished, input);
   if (unfinished)
-    std::erase_if(
-        made, [&](const Triangle& t) { return at_crossing(*unfinished, finished.vertices, t); });
-  return made;
+    std::erase_if(crossing, [&](const Triangle& t) {
+      return at_crossing(*unfinished, finished.vertices, t);
+    });
+  return crossing;
 }
 
 }  // namespace
@@ -35,10 +35,10 @@ void finish_uncrossed(RemeshResult& result, const TriangleMesh& input, const Fin
   // topology control does not refine there either: its output cannot be embedded, and guarding
   // cost camel.off at 5k 0.06% on its Hausdorff max for 4 more crossing triangles in all.
   if (crossing.empty() || input_crossings.found()) return;
-  std::unique_ptr<SurfaceProjector> before;
-  if (!crossings_of_its_own(unfinished.mesh, input_crossings).empty())
-    before = crossing_surface(unfinished.mesh, self_crossing_triangles(unfinished.mesh));
-  crossing = crossings_made(result.mesh, input_crossings, before.get());
+  // The input crosses itself nowhere: all the extraction's crossings are its own.
+  const std::unique_ptr<SurfaceProjector> before =
+      crossing_surface(unfinished.mesh, self_crossing_triangles(unfinished.mesh));
+  crossing = crossings_made(std::move(crossing), result.mesh, before.get());
   std::set<Vec3> guarded;
   for (int attempt = 1; attempt <= attempts && !crossing.empty(); ++attempt) {
     const std::set<Vec3> near =
@@ -46,11 +46,13 @@ void finish_uncrossed(RemeshResult& result, const TriangleMesh& input, const Fin
     guarded.insert(near.begin(), near.end());
     RemeshResult again = unfinished;
     finish(again, guarded);
-    std::vector<Triangle> left = crossings_made(again.mesh, input_crossings, before.get());
+    std::vector<Triangle> all = crossings_of_its_own(again.mesh, input_crossings);
+    const std::size_t count = all.size();
+    std::vector<Triangle> left = crossings_made(std::move(all), again.mesh, before.get());
     if (left.size() >= crossing.size()) break;
     result = std::move(again);
     result.vertices_guarded = guarded.size();
-    result.output_crossing_triangles = crossings_of_its_own(result.mesh, input_crossings).size();
+    result.output_crossing_triangles = count;
     crossing = std::move(left);
   }
 }
