@@ -169,22 +169,29 @@ struct RestrictedVoronoiDiagram::Impl {
     }
   }
 
-  // Calls visit(j) for every seed j whose bisector with seed i may meet a polygon around x_i,
-  // until visit returns false. reach2() is the polygon's current squared reach from x_i,
-  // rounded up: a bisector farther than twice that cannot cut the polygon. The stored nearest
-  // seeds come first, nearest first, so the loop can stop at the first one out of reach; if
-  // the polygon still reaches past them all, a radius search fetches the rest (rare once seeds
-  // are well spread). The clipped polygon does not depend on the order of the bisectors.
+  // Calls visit(j, J, |J|²), J = x_j − x_i, for every seed j whose bisector with seed i may meet
+  // a polygon around x_i, until visit returns false. reach2() is the polygon's current squared
+  // reach from x_i, rounded up: a bisector farther than twice that cannot cut the polygon. The
+  // stored nearest seeds come first, nearest first, so the loop can stop at the first one out of
+  // reach; if the polygon still reaches past them all, a radius search fetches the rest (rare
+  // once seeds are well spread). The clipped polygon does not depend on the order of the
+  // bisectors. J and |J|² go to visit as the reach test made them (BisectorScreen takes them).
   template <class Reach2, class Visit>
   void for_candidates(Index i, Scratch& s, const Reach2& reach2, const Visit& visit) const {
-    const auto within = [&](Index j) {
-      const double d2 = dot(seeds[j] - seeds[i], seeds[j] - seeds[i]);
-      return d2 * (1 - 1e-10) <= 4 * reach2();
+    const Vec3& xi = seeds[i];
+    // Whether j is within reach, and if so whether visit(j) says go on: `stop` set otherwise.
+    const auto reached = [&](Index j, bool& stop) {
+      const Vec3 J = seeds[j] - xi;
+      const double JJ = dot(J, J);
+      if (!(JJ * (1 - 1e-10) <= 4 * reach2())) return false;
+      stop = !visit(j, J, JJ);
+      return true;
     };
     const std::span<const Index> stored = neighbors->of(i);
+    bool stop = false;
     for (Index j : stored) {
-      if (!within(j)) break;
-      if (!visit(j)) return;
+      if (!reached(j, stop)) break;
+      if (stop) return;
     }
     // Done if the list holds every seed within reach, else a radius search finds the rest.
     const double search2 = 4 * reach2() * (1 + 1e-6);
@@ -199,8 +206,8 @@ struct RestrictedVoronoiDiagram::Impl {
     // seeds beyond the reach an earlier, wider search brought), skipping the seeds the shrinking
     // polygon no longer reaches.
     for (Index j : searched.found)
-      if (j != i && std::find(stored.begin(), stored.end(), j) == stored.end() && within(j) &&
-          !visit(j))
+      if (j != i && std::find(stored.begin(), stored.end(), j) == stored.end() &&
+          reached(j, stop) && stop)
         return;
   }
 
@@ -217,7 +224,7 @@ struct RestrictedVoronoiDiagram::Impl {
       const double reach2 = squared_reach(seeds[i], std::span(&corner, 1));
       for_candidates(
           i, s, [&] { return reach2; },
-          [&](Index j) {
+          [&](Index j, const Vec3&, double) {
             if (predicates::closer_to_cell(frame, corner, j, s.counters)) return true;
             frame.cell = j;
             return false;
@@ -237,14 +244,13 @@ struct RestrictedVoronoiDiagram::Impl {
   // that may have is taken as infinite, which no A² passes).
   class BisectorScreen {
    public:
-    BisectorScreen(const Ball& ball, const Vec3& xi) : xi_(xi), C_(ball.center - xi) {
+    BisectorScreen(const Ball& ball, const Vec3& xi) : C_(ball.center - xi) {
       const double k = 2 * ball.radius * (1 + 1e-10) + 2e-10 * norm(C_);
       k2_ = k * k;
       if (k2_ != 0 && k2_ < kNormal) k2_ = std::numeric_limits<double>::infinity();
     }
-    bool beyond(const Vec3& xj) const {
-      const Vec3 J = xj - xi_;
-      const double JJ = dot(J, J);
+    // J = x_j − x_i, JJ = |J|².
+    bool beyond(const Vec3& J, double JJ) const {
       const double A = JJ * (1 - 1e-10) - 2 * dot(J, C_);
       const double AA = A * A;
       return A > 0 && AA >= kNormal && JJ * k2_ < AA;
@@ -252,7 +258,7 @@ struct RestrictedVoronoiDiagram::Impl {
 
    private:
     static constexpr double kNormal = 0x1p-900;  // far above 2^-1022, where doubles lose digits
-    Vec3 xi_, C_;
+    Vec3 C_;
     double k2_;
   };
 
@@ -287,8 +293,8 @@ struct RestrictedVoronoiDiagram::Impl {
       BisectorScreen screen(bounding_ball(s.polygon), seeds[i]);
       for_candidates(
           i, s, [&] { return reach2; },
-          [&](Index j) {
-            if (screen.beyond(seeds[j]) || !clip(frame, j, s)) return true;
+          [&](Index j, const Vec3& J, double JJ) {
+            if (screen.beyond(J, JJ) || !clip(frame, j, s)) return true;
             if (s.polygon.empty()) return false;
             reach2 = squared_reach(seeds[i], s.polygon);
             screen = BisectorScreen(bounding_ball(s.polygon), seeds[i]);
