@@ -70,7 +70,7 @@ TEST(CrossingGuard, WhereGuardingDoesNotHelpTheFirstOutputStaysAndItsCrossingsAr
   EXPECT_EQ(result.vertices_guarded, 0u);
 }
 
-TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfNothingRunsAgain) {
+TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfThereNothingRunsAgain) {
   const TriangleMesh plain = grid(), crossing = folded(plain, kCentre);
   const FinishSteps nothing = [](RemeshResult&, const std::set<Vec3>&) {};
   int runs = 0;
@@ -84,20 +84,6 @@ TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfNothingRunsAgain) {
   finish_uncrossed(of_input, crossing, counted, 3, 1.5);
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(of_input.output_crossing_triangles, 0u);
-  // The input crosses itself elsewhere (folded at vertex 10, (1/8, 1/8)): its output cannot be
-  // embedded, and the crossings made at the centre are counted (those farther from the input's
-  // than their longest edges), not guarded.
-  runs = 0;
-  RemeshResult beside_input;
-  beside_input.mesh = plain;
-  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>&) {
-    ++runs;
-    r.mesh = folded(r.mesh, kCentre);
-  };
-  finish_uncrossed(beside_input, folded(plain, 10), fold, 3, 1.5);
-  EXPECT_EQ(runs, 1);
-  EXPECT_GT(beside_input.output_crossing_triangles, 0u);
-  EXPECT_EQ(beside_input.vertices_guarded, 0u);
   // The extraction crossed itself (topology control's rounds left it): counted, not guarded.
   runs = 0;
   RemeshResult of_extraction;
@@ -106,6 +92,37 @@ TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfNothingRunsAgain) {
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(of_extraction.output_crossing_triangles, crossing_triangles(crossing));
   EXPECT_EQ(of_extraction.vertices_guarded, 0u);
+}
+
+TEST(CrossingGuard, WhereTheInputCrossesItselfElsewhereTheCrossingsMadeAreGuarded) {
+  // The input folded at vertex 10, (1/8, 1/8); the steps fold the centre unless it is guarded:
+  // crossings farther from the input's than their longest edges are the output's own.
+  const TriangleMesh plain = grid(), input = folded(plain, 10);
+  ASSERT_GT(crossing_triangles(input), 0u);
+  int runs = 0;
+  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>& guarded) {
+    ++runs;
+    if (!guarded.contains(plain.vertices[kCentre])) r.mesh = folded(r.mesh, kCentre);
+  };
+  RemeshResult beside_input;
+  beside_input.mesh = plain;
+  finish_uncrossed(beside_input, input, fold, 3, 1.5);
+  EXPECT_EQ(runs, 2);
+  EXPECT_EQ(beside_input.output_crossing_triangles, 0u);
+  EXPECT_GT(beside_input.vertices_guarded, 0u);
+  EXPECT_EQ(beside_input.mesh.vertices, plain.vertices);
+  // Where guarding leaves as many of its own in all, the first output stays.
+  runs = 0;
+  const FinishSteps fold_anyway = [&](RemeshResult& r, const std::set<Vec3>&) {
+    ++runs;
+    r.mesh = folded(r.mesh, kCentre);
+  };
+  RemeshResult unhelped;
+  unhelped.mesh = plain;
+  finish_uncrossed(unhelped, input, fold_anyway, 3, 1.5);
+  EXPECT_EQ(runs, 2);
+  EXPECT_GT(unhelped.output_crossing_triangles, 0u);
+  EXPECT_EQ(unhelped.vertices_guarded, 0u);
 }
 
 TEST(CrossingGuard, PointsNearCrossingsAreTheExtractionsVerticesWithinTheReach) {

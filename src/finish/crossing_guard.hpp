@@ -18,11 +18,12 @@ namespace cvtmesh {
 // given guarded.
 using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
 
-// Runs `finish` on `result`; then, while its output has crossing triangles (crossings_of_its_own)
-// that the extraction it started from did not have, and `input` crosses itself nowhere, up to
-// `attempts` times, runs it again on the extraction with the vertices around them
-// guarded (points_near_crossings, `reach` times the attempt's number), kept where that leaves
-// fewer. Sets `result.output_crossing_triangles` and `result.vertices_guarded`.
+// Runs `finish` on `result`; then, while its output has crossing triangles of its own (away from
+// where `input` crosses itself, if it does: crossings_of_its_own) that the extraction it started
+// from did not have, up to `attempts` times, runs it again on the extraction with the vertices
+// around them guarded (points_near_crossings, `reach` times the attempt's number), kept where
+// that leaves fewer such and no more of its own in all. Sets `result.output_crossing_triangles`
+// and `result.vertices_guarded`.
 void finish_uncrossed(RemeshResult& result, const TriangleMesh& input, const FinishSteps& finish,
                       int attempts, double reach);
 
