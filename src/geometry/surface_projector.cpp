@@ -4,13 +4,12 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/exceptions.h>
 
 #include <boost/iterator/counting_iterator.hpp>
-#include <boost/iterator/function_output_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <nanoflann.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -249,6 +248,69 @@ class WithinTraits {
   std::optional<SurfaceProjector::Near> found_;
 };
 
+// The crossings of segment [a, b] with the surface's triangles (CGAL's traversal, our traits),
+// each as its parameter s in [0, 1] along the segment and its triangle, handed to `found`.
+// CGAL's own segment queries construct each crossing with the kernel's general intersection of
+// a segment and a triangle, and were most of the fit's time (finish/fit_surface asks for every
+// vertex, edge midpoint and centroid, every round); here a slab test opens a box, and the
+// crossing is Möller and Trumbore's (barycentric coordinates and the parameter from one cross
+// product each), accepted a hair (1e-12) past the triangle's edges and the segment's ends, so that
+// a segment through an edge or a vertex is seen by a triangle there. A segment in a triangle's
+// plane meets it at no single point: no crossing there.
+template <class Found>
+class SegmentTraits {
+ public:
+  SegmentTraits(const Vec3& a, const Vec3& b, const TriangleStore& store, const Found& found)
+      : a_(a), d_(b - a), store_(store), found_(found) {}
+
+  static constexpr bool go_further() { return true; }
+
+  void intersection(const Kernel::Point_3&, const Primitive& primitive) {
+    const std::uint32_t t = primitive.id();
+    const Vec3 q0 = store_.corner(t, 0), e1 = store_.corner(t, 1) - q0,
+               e2 = store_.corner(t, 2) - q0;
+    const Vec3 h = cross(d_, e2);
+    const double det = dot(e1, h);
+    if (det == 0 || !std::isfinite(det)) return;
+    const double inverse = 1 / det;
+    const Vec3 w = a_ - q0;
+    const double u = dot(w, h) * inverse;
+    if (u < -kSlack || u > 1 + kSlack) return;
+    const Vec3 g = cross(w, e1);
+    const double v = dot(d_, g) * inverse;
+    if (v < -kSlack || u + v > 1 + kSlack) return;
+    const double s = dot(e2, g) * inverse;
+    if (s < -kSlack || s > 1 + kSlack) return;
+    found_(std::clamp(s, 0.0, 1.0), t);
+  }
+
+  // The slab test: whether the segment's parameters within the box's three slabs overlap, with
+  // the same slack.
+  bool do_intersect(const Kernel::Point_3&, const CGAL::AABB_node<AabbTraits>& node) const {
+    const CGAL::Bbox_3& box = node.bbox();
+    double low = -kSlack, high = 1 + kSlack;
+    for (int k = 0; k < 3; ++k) {
+      const double from = a_[k], step = d_[k];
+      if (step == 0) {
+        if (from < box.min(k) || from > box.max(k)) return false;
+        continue;
+      }
+      double s0 = (box.min(k) - from) / step, s1 = (box.max(k) - from) / step;
+      if (s0 > s1) std::swap(s0, s1);
+      low = std::max(low, s0 - kSlack);
+      high = std::min(high, s1 + kSlack);
+      if (low > high) return false;
+    }
+    return true;
+  }
+
+ private:
+  static constexpr double kSlack = 1e-12;
+  Vec3 a_, d_;
+  const TriangleStore& store_;
+  const Found& found_;
+};
+
 }  // namespace
 
 struct SurfaceProjector::Tree {
@@ -336,26 +398,15 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
   // No line (a zero direction), or nothing to search (an unused vertex's infinite reach).
   if (!(reach > 0) || !std::isfinite(reach) || direction == Vec3{}) return std::nullopt;
   const Vec3 a = p - reach * direction, b = p + reach * direction;
-  const Kernel::Segment_3 segment(point(a), point(b));
-  using Hit = AabbTree::Intersection_and_primitive_id<Kernel::Segment_3>::Type;
   std::optional<double> nearest;
-  // Each crossing as the tree finds it, in its order (nothing stored: the fit asks for every
-  // vertex, edge midpoint and centroid, every round). The constructions are in plain doubles,
-  // whose side tests may contradict one another on a triangle nearly flat along the segment;
-  // CGAL then throws ("COLLINEAR is impossible", a noised slab folded through itself at 300
-  // vertices): no crossing is taken then, and the caller's fallback, the nearest point, serves.
-  try {
-    tree_->tree.all_intersections(
-        segment, boost::make_function_output_iterator([&](const Hit& hit) {
-          const Kernel::Point_3* point = boost::get<Kernel::Point_3>(&hit.first);
-          if (!point) return;  // the segment lies in a triangle's plane: no crossing there
-          if (facing != Vec3{} && !(dot(tree_->normals[hit.second], facing) > 0)) return;
-          const double t = dot(vec(*point) - p, direction);
-          if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
-        }));
-  } catch (const CGAL::Failure_exception&) {
-    return std::nullopt;
-  }
+  // Each crossing as the tree finds it, in its order (nothing stored).
+  const auto found = [&](double s, std::uint32_t triangle) {
+    if (facing != Vec3{} && !(dot(tree_->normals[triangle], facing) > 0)) return;
+    const double t = dot((a + s * (b - a)) - p, direction);
+    if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
+  };
+  SegmentTraits search(a, b, tree_->store, found);
+  tree_->tree.traversal(point(p), search);
   return nearest;
 }
 
