@@ -7,6 +7,11 @@
 //     icosphere of level 6; counters shapes_s, projections_s (every vertex once),
 //     shapes_over_projections, flips, moves, collapses (J = 3 has some), and Qmin and θmin before
 //     and after.
+//   BM_ImproveShapesGuarded/J: the same with every vertex guarded (VertexSupport::guarded, as
+//     finish/crossing_guard guards those near crossings the finishing steps made): each flip, move
+//     and collapse checked for triangles passing through others (finish/near_triangles finds the
+//     triangles to check); counters guarded_s, unguarded_s (BM_ImproveShapes's run),
+//     guarded_over_unguarded, and the flips, moves and collapses of both.
 //   BM_FitSurface/R: the same level-4 icosphere, its vertices on the level-6 one, fitted to it in R
 //     rounds (finish/fit_surface); counters fit_s, projections_s, fit_over_projections, and the
 //     Hausdorff mean before and after (% of the radius).
@@ -109,6 +114,37 @@ void BM_ImproveShapes(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ImproveShapes)->Arg(1)->Arg(2)->Arg(3)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BM_ImproveShapesGuarded(benchmark::State& state) {
+  const TriangleMesh fine = testing::icosphere(6);
+  const SurfaceProjector surface(fine);
+  const TriangleMesh start = testing::jittered_on_sphere(
+      testing::icosphere(4), 0.01 * static_cast<double>(state.range(0)), 1);
+  std::vector<VertexSupport> guarded(start.vertices.size());
+  for (VertexSupport& s : guarded) s.guarded = true;
+  for (auto _ : state) {
+    std::vector<Edge> no_features;
+    TriangleMesh plain = start;
+    auto t0 = std::chrono::steady_clock::now();
+    const ShapeImprovement a = improve_shapes(plain, surface, nullptr, {}, no_features, 5);
+    const double unguarded_s = seconds_since(t0);
+    TriangleMesh checked = start;
+    t0 = std::chrono::steady_clock::now();
+    const ShapeImprovement b = improve_shapes(checked, surface, nullptr, guarded, no_features, 5);
+    const double guarded_s = seconds_since(t0);
+    state.SetIterationTime(guarded_s);
+    state.counters["guarded_s"] = guarded_s;
+    state.counters["unguarded_s"] = unguarded_s;
+    state.counters["guarded_over_unguarded"] = guarded_s / unguarded_s;
+    state.counters["flips"] = static_cast<double>(a.flips);
+    state.counters["moves"] = static_cast<double>(a.moves);
+    state.counters["collapses"] = static_cast<double>(a.collapses);
+    state.counters["guarded_flips"] = static_cast<double>(b.flips);
+    state.counters["guarded_moves"] = static_cast<double>(b.moves);
+    state.counters["guarded_collapses"] = static_cast<double>(b.collapses);
+  }
+}
+BENCHMARK(BM_ImproveShapesGuarded)->Arg(1)->Arg(3)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 void BM_FitSurface(benchmark::State& state) {
   const TriangleMesh fine = testing::icosphere(6);

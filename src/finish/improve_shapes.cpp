@@ -14,6 +14,7 @@
 #include "features/curve_projector.hpp"
 #include "features/edge_uses.hpp"
 #include "finish/move_limits.hpp"
+#include "finish/near_triangles.hpp"
 #include "finish/surface_gap.hpp"
 #include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
@@ -533,6 +534,8 @@ class ShapeImprover {
       start_gap(v);  // measured while their triangles are the start's
     mesh_.triangles[t1] = {c, a, d};
     mesh_.triangles[t2] = {d, b, c};
+    near_.rewired(t1);
+    near_.rewired(t2);
     for (const Index v : {a, b, c, d}) changed(v);
     std::erase(around_[a], t2);
     std::erase(around_[b], t1);
@@ -573,11 +576,12 @@ class ShapeImprover {
     return crosses;
   }
 
-  // Whether a triangle of `changed` passes through another (triangles_cross). Every triangle is
-  // looked at, as sheets far apart along the mesh can be close in space (a plate a tenth of an
-  // edge thick, its two faces nine rings apart): only guarded vertices ask, and only where the
-  // finishing steps made crossings (crossing_guard), so a search structure kept up to date
-  // through every flip, move, collapse and undo would cost more than it saves.
+  // Whether a triangle of `changed` passes through another (triangles_cross). Any triangle may,
+  // as sheets far apart along the mesh can be close in space (a plate a tenth of an edge thick,
+  // its two faces nine rings apart): those whose boxes overlap are found in space (near_, built
+  // at the first check: only guarded vertices ask, and only where the finishing steps made
+  // crossings). A grid built during a check sees `changed` as it is tried: they count as
+  // rewired, since the try is undone.
   template <class Triangles>
   bool crosses_another(const Triangles& changed) const {
     const std::vector<Vec3>& p = mesh_.vertices;
@@ -590,16 +594,23 @@ class ShapeImprover {
       }
       return b;
     };
+    if (near_.stale()) {
+      near_.build(mesh_, gone_);
+      for (const Index t : changed) near_.rewired(t);
+    }
+    bool crosses = false;
     for (const Index t : changed) {
-      const auto [lo, hi] = box(t);
-      for (Index s = 0; s < mesh_.triangles.size(); ++s) {
-        if (gone_[s] || std::ranges::find(changed, s) != changed.end()) continue;
+      const std::array<Vec3, 2> bounds = box(t);
+      const Vec3 &lo = bounds[0], &hi = bounds[1];
+      near_.for_each_near(lo, hi, [&](Index s) {
+        if (crosses || gone_[s] || std::ranges::find(changed, s) != changed.end()) return;
         const auto [slo, shi] = box(s);
         if (slo.x > hi.x || slo.y > hi.y || slo.z > hi.z || shi.x < lo.x || shi.y < lo.y ||
             shi.z < lo.z)
-          continue;
-        if (triangles_cross(mesh_, mesh_.triangles[t], mesh_.triangles[s])) return true;
-      }
+          return;
+        crosses = triangles_cross(mesh_, mesh_.triangles[t], mesh_.triangles[s]);
+      });
+      if (crosses) return true;
     }
     return false;
   }
@@ -646,6 +657,8 @@ class ShapeImprover {
     for (int k = 0; k < 4; ++k) around_[quad[k]] = std::move(stars[k]);
     mesh_.triangles[q->t1] = f1;
     mesh_.triangles[q->t2] = f2;
+    near_.rewired(q->t1);
+    near_.rewired(q->t2);
     put_back(saved);
     return false;
   }
@@ -687,7 +700,10 @@ class ShapeImprover {
       done.moves += moves;
       return true;
     }
-    for (std::size_t k = 0; k < r.vertices.size(); ++k) mesh_.vertices[r.vertices[k]] = r.from[k];
+    for (std::size_t k = 0; k < r.vertices.size(); ++k) {
+      mesh_.vertices[r.vertices[k]] = r.from[k];
+      near_.moved(r.vertices[k], r.from[k]);
+    }
     return false;
   }
 
@@ -794,6 +810,7 @@ class ShapeImprover {
     for (std::size_t k = 0; k < at_x.size(); ++k) {
       const Index s = at_x[k];
       Triangle& tri = mesh_.triangles[s];
+      near_.rewired(s);
       for (Index w : tri) changed(w);
       if (std::ranges::find(tri, y) != tri.end()) {
         gone_[s] = true;
@@ -827,6 +844,7 @@ class ShapeImprover {
     for (std::size_t k = 0; k < at_x.size(); ++k) {
       mesh_.triangles[at_x[k]] = old_triangles[k];
       gone_[at_x[k]] = false;
+      near_.rewired(at_x[k]);
     }
     for (auto& [w, star] : stars) around_[w] = std::move(star);
     around_[x] = at_x;
@@ -893,6 +911,7 @@ class ShapeImprover {
       return false;
     }
     p[v] = at;
+    near_.moved(v, at);
     changed(v);
     return true;
   }
@@ -1061,7 +1080,8 @@ class ShapeImprover {
   // Per triangle, the surface triangle gap_within last found within reach of it (kNotFound: none).
   static constexpr std::size_t kNotFound = ~std::size_t{0};
   mutable std::vector<std::size_t> near_surface_;
-  std::vector<bool> gone_;  // per triangle: taken away by a collapse
+  std::vector<bool> gone_;      // per triangle: taken away by a collapse
+  mutable NearTriangles near_;  // for crosses_another
   std::size_t collapse_budget_;
   WorstShape floor_;  // the mesh's worst Q and θmin at the start, then where balance() began
   std::vector<std::vector<Index>> around_;  // per vertex, its triangles
