@@ -10,6 +10,7 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -248,20 +249,25 @@ class WithinTraits {
   std::optional<SurfaceProjector::Near> found_;
 };
 
-// The crossings of segment [a, b] with the surface's triangles (CGAL's traversal, our traits),
-// each as its parameter s in [0, 1] along the segment and its triangle, handed to `found`.
-// CGAL's own segment queries construct each crossing with the kernel's general intersection of
-// a segment and a triangle, and were most of the fit's time (finish/fit_surface asks for every
-// vertex, edge midpoint and centroid, every round); here a slab test opens a box, and the
-// crossing is Möller and Trumbore's (barycentric coordinates and the parameter from one cross
-// product each), accepted a hair (1e-12) past the triangle's edges and the segment's ends, so that
-// a segment through an edge or a vertex is seen by a triangle there. A segment in a triangle's
-// plane meets it at no single point: no crossing there.
+// The crossing of segment [a, b] with the surface nearest its midpoint (CGAL's traversal, our
+// traits): each crossing, as its parameter s in [0, 1] along the segment and its triangle, goes
+// to `found`, which says whether it takes it; one taken narrows the search to the part of the
+// segment nearer the midpoint, so that fewer boxes open after it (the crossing nearest the
+// midpoint is found all the same, and the first found of two as near, as without). CGAL's own
+// segment queries construct each crossing with the kernel's general intersection of a segment and
+// a triangle, and were most of the fit's time (finish/fit_surface asks for every vertex, edge
+// midpoint and centroid, every round); here a slab test opens a box, and the crossing is Möller
+// and Trumbore's (barycentric coordinates and the parameter from one cross product each),
+// accepted a hair (1e-12) past the triangle's edges and the segment's ends, so that a segment
+// through an edge or a vertex is seen by a triangle there. A segment in a triangle's plane meets
+// it at no single point: no crossing there.
 template <class Found>
 class SegmentTraits {
  public:
   SegmentTraits(const Vec3& a, const Vec3& b, const TriangleStore& store, const Found& found)
-      : a_(a), d_(b - a), store_(store), found_(found) {}
+      : a_(a), d_(b - a), store_(store), found_(found) {
+    for (int k = 0; k < 3; ++k) inverse_[k] = d_[k] != 0 ? 1 / d_[k] : 0;
+  }
 
   static constexpr bool go_further() { return true; }
 
@@ -280,22 +286,26 @@ class SegmentTraits {
     const double v = dot(d_, g) * inverse;
     if (v < -kSlack || u + v > 1 + kSlack) return;
     const double s = dot(e2, g) * inverse;
-    if (s < -kSlack || s > 1 + kSlack) return;
-    found_(std::clamp(s, 0.0, 1.0), t);
+    if (s < low_ || s > high_) return;
+    const double at = std::clamp(s, 0.0, 1.0);
+    if (!found_(at, t)) return;
+    const double half = std::abs(at - 0.5);
+    low_ = 0.5 - half - kSlack;
+    high_ = 0.5 + half + kSlack;
   }
 
   // The slab test: whether the segment's parameters within the box's three slabs overlap, with
-  // the same slack.
+  // the same slack, on the part of the segment still searched.
   bool do_intersect(const Kernel::Point_3&, const CGAL::AABB_node<AabbTraits>& node) const {
     const CGAL::Bbox_3& box = node.bbox();
-    double low = -kSlack, high = 1 + kSlack;
+    double low = low_, high = high_;
     for (int k = 0; k < 3; ++k) {
-      const double from = a_[k], step = d_[k];
-      if (step == 0) {
+      const double from = a_[k];
+      if (d_[k] == 0) {
         if (from < box.min(k) || from > box.max(k)) return false;
         continue;
       }
-      double s0 = (box.min(k) - from) / step, s1 = (box.max(k) - from) / step;
+      double s0 = (box.min(k) - from) * inverse_[k], s1 = (box.max(k) - from) * inverse_[k];
       if (s0 > s1) std::swap(s0, s1);
       low = std::max(low, s0 - kSlack);
       high = std::min(high, s1 + kSlack);
@@ -307,6 +317,8 @@ class SegmentTraits {
  private:
   static constexpr double kSlack = 1e-12;
   Vec3 a_, d_;
+  std::array<double, 3> inverse_{};
+  double low_ = -kSlack, high_ = 1 + kSlack;  // the part of the segment searched
   const TriangleStore& store_;
   const Found& found_;
 };
@@ -399,11 +411,13 @@ std::optional<double> SurfaceProjector::along(const Vec3& p, const Vec3& directi
   if (!(reach > 0) || !std::isfinite(reach) || direction == Vec3{}) return std::nullopt;
   const Vec3 a = p - reach * direction, b = p + reach * direction;
   std::optional<double> nearest;
-  // Each crossing as the tree finds it, in its order (nothing stored).
+  // Each crossing as the tree finds it, in its order (nothing stored): taken where it is nearer.
   const auto found = [&](double s, std::uint32_t triangle) {
-    if (facing != Vec3{} && !(dot(tree_->normals[triangle], facing) > 0)) return;
+    if (facing != Vec3{} && !(dot(tree_->normals[triangle], facing) > 0)) return false;
     const double t = dot((a + s * (b - a)) - p, direction);
-    if (!nearest || std::abs(t) < std::abs(*nearest)) nearest = t;
+    if (nearest && !(std::abs(t) < std::abs(*nearest))) return false;
+    nearest = t;
+    return true;
   };
   SegmentTraits search(a, b, tree_->store, found);
   tree_->tree.traversal(point(p), search);
