@@ -71,6 +71,16 @@ TEST(NearTriangles, FindsEveryOverlappingTriangleAfterMovesAndRewiring) {
   }
 }
 
+TEST(NearTriangles, ABoxWiderThanTheGridFindsEveryTriangle) {
+  const TriangleMesh m = testing::icosphere(2);
+  const std::vector<bool> gone(m.triangles.size(), false);
+  NearTriangles near;
+  near.build(m, gone);
+  std::set<Index> found;
+  near.for_each_near({-10, -10, -10}, {10, 10, 10}, [&](Index s) { found.insert(s); });
+  EXPECT_EQ(found.size(), m.triangles.size());
+}
+
 TEST(NearTriangles, DriftPastACellOrManyRewiredTrianglesAskForARebuild) {
   TriangleMesh m = testing::icosphere(2);
   const std::vector<bool> gone(m.triangles.size(), false);

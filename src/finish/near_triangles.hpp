@@ -39,11 +39,20 @@ class NearTriangles {
     };
     const Cell a = cell_of({lo.x - drift_, lo.y - drift_, lo.z - drift_}),
                b = cell_of({hi.x + drift_, hi.y + drift_, hi.z + drift_});
-    for (std::int64_t i = a.i; i <= b.i; ++i)
-      for (std::int64_t j = a.j; j <= b.j; ++j)
-        for (std::int64_t k = a.k; k <= b.k; ++k)
-          if (const auto found = cells_.find(key({i, j, k})); found != cells_.end())
-            for (const Index s : found->second) once(s);
+    // A box wider than the grid's filled cells (a long sliver searched) takes them all: no search
+    // costs more than a pass over the triangles.
+    const double span = static_cast<double>(b.i - a.i + 1) * static_cast<double>(b.j - a.j + 1) *
+                        static_cast<double>(b.k - a.k + 1);
+    if (span > static_cast<double>(cells_.size())) {
+      for (const auto& [cell, listed] : cells_)
+        for (const Index s : listed) once(s);
+    } else {
+      for (std::int64_t i = a.i; i <= b.i; ++i)
+        for (std::int64_t j = a.j; j <= b.j; ++j)
+          for (std::int64_t k = a.k; k <= b.k; ++k)
+            if (const auto found = cells_.find(key({i, j, k})); found != cells_.end())
+              for (const Index s : found->second) once(s);
+    }
     for (const Index s : everywhere_) once(s);
     for (const Index s : rewired_) once(s);
   }
