@@ -20,6 +20,7 @@
 #include "geometry/angle.hpp"
 #include "geometry/self_crossings.hpp"
 #include "geometry/surface_projector.hpp"
+#include "geometry/triangle_bounds.hpp"
 #include "geometry/triangles_around.hpp"
 #include "geometry/unit_vector.hpp"
 #include "quality/min_shape.hpp"
@@ -584,29 +585,16 @@ class ShapeImprover {
   // rewired, since the try is undone.
   template <class Triangles>
   bool crosses_another(const Triangles& changed) const {
-    const std::vector<Vec3>& p = mesh_.vertices;
-    const auto box = [&](Index t) {
-      const Triangle& f = mesh_.triangles[t];
-      std::array<Vec3, 2> b{p[f[0]], p[f[0]]};
-      for (const Index v : f) {
-        b[0] = {std::min(b[0].x, p[v].x), std::min(b[0].y, p[v].y), std::min(b[0].z, p[v].z)};
-        b[1] = {std::max(b[1].x, p[v].x), std::max(b[1].y, p[v].y), std::max(b[1].z, p[v].z)};
-      }
-      return b;
-    };
     if (near_.stale()) {
       near_.build(mesh_, gone_);
       for (const Index t : changed) near_.rewired(t);
     }
     bool crosses = false;
     for (const Index t : changed) {
-      const std::array<Vec3, 2> bounds = box(t);
-      const Vec3 &lo = bounds[0], &hi = bounds[1];
-      near_.for_each_near(lo, hi, [&](Index s) {
-        if (crosses || gone_[s] || std::ranges::find(changed, s) != changed.end()) return;
-        const auto [slo, shi] = box(s);
-        if (slo.x > hi.x || slo.y > hi.y || slo.z > hi.z || shi.x < lo.x || shi.y < lo.y ||
-            shi.z < lo.z)
+      const TriangleBounds bounds = bounds_of(mesh_.vertices, mesh_.triangles[t]);
+      near_.for_each_near(bounds.lo, bounds.hi, [&](Index s) {
+        if (crosses || gone_[s] || std::ranges::find(changed, s) != changed.end() ||
+            !overlap(bounds_of(mesh_.vertices, mesh_.triangles[s]), bounds))
           return;
         crosses = triangles_cross(mesh_, mesh_.triangles[t], mesh_.triangles[s]);
       });

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/triangle_bounds.hpp"
+
 namespace cvtmesh {
 
 namespace {
@@ -43,30 +45,21 @@ void NearTriangles::build(const TriangleMesh& mesh, const std::vector<bool>& gon
   seen_.assign(n, 0);
   stamp_ = 0;
   built_ = true;
-  const auto bounds = [&](Index t) {
-    const Triangle& f = mesh.triangles[t];
-    Vec3 lo = at_[f[0]], hi = lo;
-    for (const Index v : f) {
-      const Vec3& p = at_[v];
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-    return std::pair{lo, hi};
-  };
+  const auto bounds = [&](Index t) { return bounds_of(at_, mesh.triangles[t]); };
   // Cells twice the mean extent of a triangle, as self_crossing_triangles sizes its grid.
   double extent = 0;
   std::size_t counted = 0;
   for (Index t = 0; t < n; ++t) {
     if (gone[t]) continue;
-    const auto [lo, hi] = bounds(t);
-    extent += std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const TriangleBounds b = bounds(t);
+    extent += std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
     ++counted;
   }
   cell_ = extent > 0 ? 2 * extent / static_cast<double>(counted) : 1.0;
   for (Index t = 0; t < n; ++t) {
     if (gone[t]) continue;
-    const auto [lo, hi] = bounds(t);
-    const Cell a = cell_of(lo), b = cell_of(hi);
+    const TriangleBounds box = bounds(t);
+    const Cell a = cell_of(box.lo), b = cell_of(box.hi);
     if ((b.i - a.i + 1) * (b.j - a.j + 1) * (b.k - a.k + 1) > kMostCells) {
       everywhere_.push_back(t);
       continue;

@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "geometry/triangle_bounds.hpp"
+
 namespace cvtmesh {
 
 namespace {
@@ -53,18 +55,9 @@ bool triangles_cross(const TriangleMesh& mesh, const Triangle& a, const Triangle
 
 namespace {
 
-struct Bounds {
-  Vec3 lo, hi;
-};
-
-bool overlap(const Bounds& a, const Bounds& b) {
-  return a.lo.x <= b.hi.x && b.lo.x <= a.hi.x && a.lo.y <= b.hi.y && b.lo.y <= a.hi.y &&
-         a.lo.z <= b.hi.z && b.lo.z <= a.hi.z;
-}
-
 // The pairs of triangles with overlapping boxes, by CGAL's box intersection (a streamed segment
 // tree): for meshes whose triangles differ so much in size that a grid would be crowded.
-void cross_by_box_tree(const TriangleMesh& mesh, const std::vector<Bounds>& bounds,
+void cross_by_box_tree(const TriangleMesh& mesh, const std::vector<TriangleBounds>& bounds,
                        std::vector<bool>& crossing) {
   std::vector<Box> boxes;
   boxes.reserve(bounds.size());
@@ -94,17 +87,10 @@ constexpr double kMostCellsPerTriangle = 8;
 // remesh: 31 ms against 55), where nearly every pair found shares a vertex, before threads.
 std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
   const std::size_t n = mesh.triangles.size();
-  std::vector<Bounds> bounds(n);
+  std::vector<TriangleBounds> bounds(n);
   double extent = 0;
   for (std::size_t t = 0; t < n; ++t) {
-    const Triangle& f = mesh.triangles[t];
-    Bounds& b = bounds[t];
-    b.lo = b.hi = mesh.vertices[f[0]];
-    for (const Index v : f) {
-      const Vec3& p = mesh.vertices[v];
-      b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y), std::min(b.lo.z, p.z)};
-      b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y), std::max(b.hi.z, p.z)};
-    }
+    const TriangleBounds& b = bounds[t] = bounds_of(mesh.vertices, mesh.triangles[t]);
     extent += std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
   }
   std::vector<bool> crossing(n, false);
@@ -117,7 +103,7 @@ std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
     return bits(i) << 42 | bits(j) << 21 | bits(k);
   };
   double cells = 0;
-  for (const Bounds& b : bounds)
+  for (const TriangleBounds& b : bounds)
     cells += static_cast<double>(at(b.hi.x) - at(b.lo.x) + 1) *
              static_cast<double>(at(b.hi.y) - at(b.lo.y) + 1) *
              static_cast<double>(at(b.hi.z) - at(b.lo.z) + 1);
@@ -145,7 +131,7 @@ std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
       for (std::size_t x = group[g]; x < group[g + 1]; ++x)
         for (std::size_t y = x + 1; y < group[g + 1]; ++y) {
           const std::uint32_t s = in_cell[x].second, t = in_cell[y].second;
-          const Bounds &p = bounds[s], &q = bounds[t];
+          const TriangleBounds &p = bounds[s], &q = bounds[t];
           if (s == t || !overlap(p, q) ||
               key(at(std::max(p.lo.x, q.lo.x)), at(std::max(p.lo.y, q.lo.y)),
                   at(std::max(p.lo.z, q.lo.z))) != here)
