@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "finish/crossing_guard.hpp"
@@ -32,6 +33,24 @@ TriangleMesh folded(TriangleMesh mesh, Index v) {
   return mesh;
 }
 
+// Finishing steps that fold the centre, unless `spared` (where given) is guarded, counting their
+// runs in `runs`.
+FinishSteps folding_centre(int& runs, std::optional<Vec3> spared = std::nullopt) {
+  return [&runs, spared](RemeshResult& r, const std::set<Vec3>& guarded) {
+    ++runs;
+    if (!spared || !guarded.contains(*spared)) r.mesh = folded(r.mesh, kCentre);
+  };
+}
+
+// finish_uncrossed, as the pipeline calls it, on an extraction of `input`.
+RemeshResult finished(const TriangleMesh& extraction, const TriangleMesh& input,
+                      const FinishSteps& finish) {
+  RemeshResult result;
+  result.mesh = extraction;
+  finish_uncrossed(result, input, finish, 3, 1.5);
+  return result;
+}
+
 TEST(CrossingGuard, StepsThatFoldTheOutputRunAgainWithTheVerticesThereGuarded) {
   const TriangleMesh input = grid();
   ASSERT_EQ(input.vertices[kCentre], (Vec3{0.5, 0.5, 0}));
@@ -56,15 +75,9 @@ TEST(CrossingGuard, StepsThatFoldTheOutputRunAgainWithTheVerticesThereGuarded) {
 
 TEST(CrossingGuard, WhereGuardingDoesNotHelpTheFirstOutputStaysAndItsCrossingsAreCounted) {
   const TriangleMesh input = grid();
-  RemeshResult result;
-  result.mesh = input;
   int runs = 0;
   // Folds the centre whatever is guarded: the attempt is no better, and the attempts stop.
-  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>&) {
-    ++runs;
-    r.mesh = folded(r.mesh, kCentre);
-  };
-  finish_uncrossed(result, input, fold, 3, 1.5);
+  const RemeshResult result = finished(input, input, folding_centre(runs));
   EXPECT_EQ(runs, 2);
   EXPECT_EQ(result.output_crossing_triangles, crossing_triangles(folded(input, kCentre)));
   EXPECT_EQ(result.vertices_guarded, 0u);
@@ -79,16 +92,12 @@ TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfThereNothingRunsAga
     nothing(r, g);
   };
   // The input crosses itself there: so does its output, and that is no crossing of its own.
-  RemeshResult of_input;
-  of_input.mesh = crossing;
-  finish_uncrossed(of_input, crossing, counted, 3, 1.5);
+  const RemeshResult of_input = finished(crossing, crossing, counted);
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(of_input.output_crossing_triangles, 0u);
   // The extraction crossed itself (topology control's rounds left it): counted, not guarded.
   runs = 0;
-  RemeshResult of_extraction;
-  of_extraction.mesh = crossing;
-  finish_uncrossed(of_extraction, plain, counted, 3, 1.5);
+  const RemeshResult of_extraction = finished(crossing, plain, counted);
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(of_extraction.output_crossing_triangles, crossing_triangles(crossing));
   EXPECT_EQ(of_extraction.vertices_guarded, 0u);
@@ -100,26 +109,15 @@ TEST(CrossingGuard, WhereTheInputCrossesItselfElsewhereTheCrossingsMadeAreGuarde
   const TriangleMesh plain = grid(), input = folded(plain, 10);
   ASSERT_GT(crossing_triangles(input), 0u);
   int runs = 0;
-  const FinishSteps fold = [&](RemeshResult& r, const std::set<Vec3>& guarded) {
-    ++runs;
-    if (!guarded.contains(plain.vertices[kCentre])) r.mesh = folded(r.mesh, kCentre);
-  };
-  RemeshResult beside_input;
-  beside_input.mesh = plain;
-  finish_uncrossed(beside_input, input, fold, 3, 1.5);
+  const RemeshResult beside_input =
+      finished(plain, input, folding_centre(runs, plain.vertices[kCentre]));
   EXPECT_EQ(runs, 2);
   EXPECT_EQ(beside_input.output_crossing_triangles, 0u);
   EXPECT_GT(beside_input.vertices_guarded, 0u);
   EXPECT_EQ(beside_input.mesh.vertices, plain.vertices);
   // Where guarding leaves as many of its own in all, the first output stays.
   runs = 0;
-  const FinishSteps fold_anyway = [&](RemeshResult& r, const std::set<Vec3>&) {
-    ++runs;
-    r.mesh = folded(r.mesh, kCentre);
-  };
-  RemeshResult unhelped;
-  unhelped.mesh = plain;
-  finish_uncrossed(unhelped, input, fold_anyway, 3, 1.5);
+  const RemeshResult unhelped = finished(plain, input, folding_centre(runs));
   EXPECT_EQ(runs, 2);
   EXPECT_GT(unhelped.output_crossing_triangles, 0u);
   EXPECT_EQ(unhelped.vertices_guarded, 0u);
