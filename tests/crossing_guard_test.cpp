@@ -47,7 +47,8 @@ RemeshResult finished(const TriangleMesh& extraction, const TriangleMesh& input,
                       const FinishSteps& finish) {
   RemeshResult result;
   result.mesh = extraction;
-  finish_uncrossed(result, input, finish, 3, 1.5);
+  InputCrossings crossings(input);
+  finish_uncrossed(result, crossings, finish, 3, 1.5);
   return result;
 }
 
@@ -65,7 +66,8 @@ TEST(CrossingGuard, StepsThatFoldTheOutputRunAgainWithTheVerticesThereGuarded) {
     guarded_last = guarded.size();
     if (!guarded.contains(input.vertices[kCentre])) r.mesh = folded(r.mesh, kCentre);
   };
-  finish_uncrossed(result, input, fold, 3, 1.5);
+  InputCrossings crossings(input);
+  finish_uncrossed(result, crossings, fold, 3, 1.5);
   EXPECT_EQ(runs, 2);
   EXPECT_EQ(result.output_crossing_triangles, 0u);
   EXPECT_EQ(result.vertices_guarded, guarded_last);
@@ -121,6 +123,36 @@ TEST(CrossingGuard, WhereTheInputCrossesItselfElsewhereTheCrossingsMadeAreGuarde
   EXPECT_EQ(runs, 2);
   EXPECT_GT(unhelped.output_crossing_triangles, 0u);
   EXPECT_EQ(unhelped.vertices_guarded, 0u);
+}
+
+TEST(CrossingGuard, AnExtractionWithoutTheInputsTopologyIsNotGuarded) {
+  // The extraction has a hole that the input does not, away from the centre (a triangle of the
+  // cell from (3/8, 1/8) to (1/2, 1/4) gone): no attempt, its crossings counted.
+  const TriangleMesh input = grid();
+  TriangleMesh holed = input;
+  const auto centroid = [&](const Triangle& t) {
+    return (1.0 / 3) * (holed.vertices[t[0]] + holed.vertices[t[1]] + holed.vertices[t[2]]);
+  };
+  const Vec3 cell_centre{0.4375, 0.1875, 0};
+  const auto far_triangle = std::min_element(
+      holed.triangles.begin(), holed.triangles.end(), [&](const Triangle& a, const Triangle& b) {
+        return distance(centroid(a), cell_centre) < distance(centroid(b), cell_centre);
+      });
+  ASSERT_LT(distance(centroid(*far_triangle), cell_centre), 0.0625);
+  holed.triangles.erase(far_triangle);
+  int runs = 0;
+  const Vec3 centre = input.vertices[kCentre];
+  const RemeshResult result = finished(holed, input, folding_centre(runs, centre));
+  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(result.output_crossing_triangles, crossing_triangles(folded(holed, kCentre)));
+  EXPECT_GT(result.output_crossing_triangles, 0u);
+  EXPECT_EQ(result.vertices_guarded, 0u);
+  // The same extraction, the input holed alike: guarded, and the guard mends it.
+  runs = 0;
+  const RemeshResult alike = finished(holed, holed, folding_centre(runs, centre));
+  EXPECT_EQ(runs, 2);
+  EXPECT_EQ(alike.output_crossing_triangles, 0u);
+  EXPECT_GT(alike.vertices_guarded, 0u);
 }
 
 TEST(CrossingGuard, PointsNearCrossingsAreTheExtractionsVerticesWithinTheReach) {

@@ -766,7 +766,8 @@ TEST(TopologyControl, AStraySeedThatCutsACreaseJoinsItRatherThanAFlipMakingASliv
   }
   ASSERT_TRUE(flippable) << "no link where the flip this test is about can be made";
   MendReport report;
-  output = mend_topology(context, std::move(output), seeds, c, 3, report);
+  InputCrossings crossings(box);
+  output = mend_topology(context, crossings, std::move(output), seeds, c, 3, report);
   EXPECT_EQ(c.kind[stray], SeedConstraints::Kind::curve);
   EXPECT_GE(report.links_mended, 1u);
   EXPECT_EQ(report.links_flipped, 0u);

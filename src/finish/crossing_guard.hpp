@@ -14,6 +14,8 @@
 
 namespace cvtmesh {
 
+class InputCrossings;
+
 // The finishing steps on `result` (its mesh the extraction), with the vertices at the points
 // given guarded.
 using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
@@ -22,9 +24,11 @@ using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
 // where `input` crosses itself, if it does: crossings_of_its_own) that the extraction it started
 // from did not have, up to `attempts` times, runs it again on the extraction with the vertices
 // around them guarded (points_near_crossings, `reach` times the attempt's number), kept where
-// that leaves fewer such and no more of its own in all. Sets `result.output_crossing_triangles`
-// and `result.vertices_guarded`.
-void finish_uncrossed(RemeshResult& result, const TriangleMesh& input, const FinishSteps& finish,
+// that leaves fewer such and no more of its own in all. Not where the extraction's topology is
+// not the input's surface's, or it is not a manifold where the surface is: that output is no
+// valid one however it is finished (remesh/topology_first tries again), and each attempt costs a
+// run of the steps. Sets `result.output_crossing_triangles` and `result.vertices_guarded`.
+void finish_uncrossed(RemeshResult& result, InputCrossings& input, const FinishSteps& finish,
                       int attempts, double reach);
 
 // The vertices of `unfinished` (the extraction the finishing steps started from) within `reach`

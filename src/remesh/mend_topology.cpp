@@ -279,12 +279,12 @@ bool crosses_itself_widely(std::size_t crossing, std::size_t triangles) {
 // The paper's loop (§2 Theorem 1, §4.4): check the extraction, insert seeds where it fails the
 // topological ball property, extract again; the best round is returned, and the pipeline's last
 // step (finish_manifold) mends what the rounds leave.
-PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::vector<Vec3>& seeds,
-                             SeedConstraints& constraints, int rounds, MendReport& report) {
+PolishedOutput mend_topology(const MendContext& m, InputCrossings& crossings, PolishedOutput output,
+                             std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,
+                             MendReport& report) {
   const SpecialEdges special = special_edges(m);
   KeptRounds kept;
   RoundStops stops(rounds, seeds.size());
-  InputCrossings crossings(m.surface);
   // Where the rounds end without the input's topology, they start again from the best round, for
   // three times as many rounds, with the seeds they add pinned (see kRoundsWithoutProgress).
   PolishSettings polish = m.polish;
@@ -347,7 +347,6 @@ PolishedOutput mend_topology(const MendContext& m, PolishedOutput output, std::v
   seeds = std::move(best.seeds);
   constraints = std::move(best.constraints);
   report = best.report;
-  report.crossing_triangles = crossings.count();
   report.links_flipped = best.assessment.links_flipped;
   report.tips_closed = best.assessment.tips_closed;
   return output;

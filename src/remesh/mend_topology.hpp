@@ -13,6 +13,8 @@
 
 namespace cvtmesh {
 
+class InputCrossings;
+
 struct MendContext {
   const TriangleMesh& surface;
   const TopologyReport& surface_topology;
@@ -37,9 +39,6 @@ struct MendReport {
   std::size_t tips_closed = 0;    // triangles added at boundary tips (close_corner_wedges)
   int rounds = 0;                 // rounds that changed the seeds
   int polish_rounds = 0;          // polishing rounds over all the extractions after the first
-  // Input triangles that cross another, searched once an output lacked the input's topology or
-  // crossed itself (0 otherwise): where sheets cross, no seed tells them apart.
-  std::size_t crossing_triangles = 0;
 };
 
 // Whether a surface of `triangles` triangles, `crossing` of which cross another, passes through
@@ -67,10 +66,11 @@ bool crosses_itself_widely(std::size_t crossing, std::size_t triangles);
 // from the best round: they also refine every cell piece that is not a disc and every split
 // cell, wherever it is, and polishing no longer moves the seeds they add; not where the input
 // crosses itself widely (crosses_itself_widely). No split cell is seeded where the input crosses
-// itself.
+// itself (`crossings`: where the context's surface does, searched once needed, and kept for the
+// finishing steps' check, finish/crossing_guard).
 // Independent of the thread count.
-PolishedOutput mend_topology(const MendContext& context, PolishedOutput output,
-                             std::vector<Vec3>& seeds, SeedConstraints& constraints, int rounds,
-                             MendReport& report);
+PolishedOutput mend_topology(const MendContext& context, InputCrossings& crossings,
+                             PolishedOutput output, std::vector<Vec3>& seeds,
+                             SeedConstraints& constraints, int rounds, MendReport& report);
 
 }  // namespace cvtmesh

@@ -22,6 +22,7 @@
 #include "finish/crossing_guard.hpp"
 #include "finish/finish_output.hpp"
 #include "geometry/even_spacing.hpp"
+#include "geometry/self_crossings.hpp"
 #include "geometry/spread_samples.hpp"
 #include "quality/hausdorff_with_tree.hpp"
 #include "remesh/edge_length_ratio.hpp"
@@ -297,6 +298,9 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   MendReport mends;
   const std::size_t optimized_seeds = seeds.size();  // the rounds append theirs
   std::vector<CellNormal> cells;                     // of the seeds as extracted, for the fit
+  // Where the surface crosses itself: searched once, where topology control or the finishing
+  // steps' check first needs it (most runs never do).
+  InputCrossings input_crossings(mesh);
   {
     // Polishing and topology control change few seeds between triangulations: each clips, and
     // collects, only where the last one changed (issue 18: topology control works locally).
@@ -315,8 +319,8 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                               extraction,     &settings.progress,
                               start};
     const auto mend_start = Clock::now();
-    output = mend_topology(context, std::move(output), seeds, constraints, settings.topology_rounds,
-                           mends);
+    output = mend_topology(context, input_crossings, std::move(output), seeds, constraints,
+                           settings.topology_rounds, mends);
     result.seconds_topology = seconds_since(mend_start);
     result.mesh = std::move(output.mesh);
     if (settings.fit_rounds > 0) cells = cell_normals(mesh, seeds, extraction.traversal);
@@ -328,7 +332,6 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   result.links_flipped = mends.links_flipped;
   result.tips_closed = mends.tips_closed;
   result.mend_rounds = mends.rounds;
-  result.input_crossing_triangles = mends.crossing_triangles;
   // The guaranteed last step (issue 18 item 1): whatever defect the rounds left goes, leaving a
   // manifold. Only for a manifold input: a non-manifold input edge is a feature the output keeps.
   const auto last_start = Clock::now();
@@ -342,12 +345,15 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   // changes around the crossings checked (finish/crossing_guard).
   const std::vector<NarrowAngle> narrow = narrow_feature_angles(mesh, features, kNarrowAngleDeg);
   finish_uncrossed(
-      result, mesh,
+      result, input_crossings,
       [&](RemeshResult& r, const std::set<Vec3>& guarded) {
         finish_output(r, seeds, optimized_seeds, cells, constraints, features, *curves, mesh,
                       *projector, narrow, settings, guarded);
       },
       kGuardAttempts, kGuardReach);
+  // Input triangles that cross another, where a search needed them (0 otherwise): where sheets
+  // cross, no seed tells them apart.
+  result.input_crossing_triangles = input_crossings.count();
   std::vector<double> ratios = edge_length_ratios(result.mesh, *projector, field, spacing);
   result.edge_length_ratio = ratio_percentiles(ratios);
   result.seconds_extraction = seconds_since(extraction_start);
