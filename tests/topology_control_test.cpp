@@ -942,6 +942,28 @@ TEST(HardCases, AKnifeEdgeFarThinnerThanTheSpacingComesOutWithoutCrossings) {
   expect_valid_remesh(knife(5, 20), 300);
 }
 
+// The knife of 5° with its back folded far from the edge (a vertex moved along the back past two
+// of its neighbours): the input now crosses itself there (14 triangles), and the crossings at the
+// edge, the output's own, are refined all the same (until this was so, no crossing was refined
+// where the input crossed itself anywhere: 7 crossing triangles were left at the edge).
+TEST(HardCases, AKnifeFoldedAtItsBackStillComesOutWithoutCrossingsAtItsEdge) {
+  constexpr int kSteps = 20;
+  TriangleMesh folded = knife(5, kSteps);
+  // The middle vertex of the back (x = 1) in the middle row: ids run along the profile (edge,
+  // upper side, back, lower side), kSteps per side, 3 kSteps per row.
+  const Index back = static_cast<Index>(3 * kSteps * (kSteps / 2) + kSteps + kSteps / 2);
+  ASSERT_DOUBLE_EQ(folded.vertices[back].x, 1.0);
+  folded.vertices[back].y += 2.5 / kSteps;
+  const std::size_t input_crossing = crossing_triangles(folded);
+  ASSERT_GT(input_crossing, 0u);
+  RemeshSettings s;
+  s.vertices = 500;
+  const RemeshResult r = remesh(folded, s);
+  expect_topology_kept(r, folded);
+  EXPECT_EQ(r.input_crossing_triangles, input_crossing);
+  EXPECT_EQ(r.output_crossing_triangles, 0u);
+}
+
 TEST(HardCases, TwoSpheresNearlyTouching) {
   expect_valid_remesh(concatenate(icosphere(3), transformed(icosphere(3), 1.0, {2.01, 0, 0})), 600);
 }

@@ -41,11 +41,11 @@ struct Assessment {
   OutputDefects defects;  // of `finished`, if its topology is not kept
   // Its topology kept, or given back by the last step (finish_manifold on a copy).
   bool rescued = true;
-  // Where its topology is kept and the input does not cross itself: its triangles that cross
-  // another (crossings_of_its_own) once the folds that the finishing steps mend before any sweep
-  // are mended (assess). Sheets closer than the spacing, or a tube narrower than it, can give
-  // the input's topology with triangles that pass through each other (couplingdown.off at 1k:
-  // 79 triangles in the narrow holes of its rim, in the first round that kept its topology).
+  // Where its topology is kept: its triangles that cross another away from where the input
+  // crosses itself, if it does (crossings_of_its_own), once the folds that the finishing steps mend
+  // before any sweep are mended (assess). Sheets closer than the spacing, or a tube narrower than
+  // it, can give the input's topology with triangles that pass through each other (couplingdown.off
+  // at 1k: 79 triangles in the narrow holes of its rim, in the first round that kept its topology).
   std::vector<Triangle> crossing;
   std::size_t links_flipped = 0, tips_closed = 0;
   // Better outputs compare greater: the input's topology, then fewer triangles at defects

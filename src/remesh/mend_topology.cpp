@@ -222,18 +222,19 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
                          m.surface_topology.is_manifold() && (pinned || no_defect), split, crossing,
                          m.extraction);
   } else if (!a.crossing.empty()) {
-    // Triangles that pass through each other, the topology kept, the input crossing itself
-    // nowhere (assess): Delaunay refinement at them, as at defects (their surface Delaunay balls
-    // reach the sheet or tube wall they cross), and seeds in the split cells near them. Without
-    // the latter, couplingdown.off at 1k kept about 80 crossing triangles in the narrow holes of
-    // its rim for four rounds, and the rounds stopped; with them, none were left after five.
+    // Triangles that pass through each other, the topology kept, away from where the input
+    // crosses itself (assess): Delaunay refinement at them, as at defects (their surface Delaunay
+    // balls reach the sheet or tube wall they cross), and seeds in the split cells near them.
+    // Without the latter, couplingdown.off at 1k kept about 80 crossing triangles in the narrow
+    // holes of its rim for four rounds, and the rounds stopped; with them, none were left after
+    // five.
     std::vector<Triangle> dual;
     for (Triangle t : a.crossing)
       if (std::all_of(t.begin(), t.end(), [&](Index v) { return v < vertex_seed.size(); })) {
         for (Index& v : t) v = vertex_seed[v];
         dual.push_back(t);
       }
-    found = defect_seeds(m.surface, seeds, dual, false, SplitCells::near_triangles, nullptr,
+    found = defect_seeds(m.surface, seeds, dual, false, SplitCells::near_triangles, crossings.get(),
                          m.extraction);
   }
   if (!a.missing.empty() && !out_of_time) {
