@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "cvtmesh/topology.hpp"
 #include "finish/crossing_guard.hpp"
 #include "geometry/self_crossings.hpp"
 #include "support/shapes.hpp"
@@ -47,6 +48,7 @@ RemeshResult finished(const TriangleMesh& extraction, const TriangleMesh& input,
                       const FinishSteps& finish) {
   RemeshResult result;
   result.mesh = extraction;
+  result.input_topology = analyze_topology(input);
   InputCrossings crossings(input);
   finish_uncrossed(result, crossings, finish, 3, 1.5);
   return result;
@@ -58,6 +60,7 @@ TEST(CrossingGuard, StepsThatFoldTheOutputRunAgainWithTheVerticesThereGuarded) {
   ASSERT_GT(crossing_triangles(folded(input, kCentre)), 0u);
   RemeshResult result;
   result.mesh = input;
+  result.input_topology = analyze_topology(input);
   int runs = 0;
   std::size_t guarded_last = 0;
   // A step that folds the centre unless it is guarded.

@@ -33,4 +33,8 @@ TopologyReport analyze_topology(const TriangleMesh& mesh);
 // Same components, Euler characteristic and boundary loops.
 bool same_topology(const TopologyReport& a, const TopologyReport& b);
 
+// Whether an output (`out`) keeps its input's (`in`) topology as a remesh must: the same topology,
+// and a manifold where the input is one.
+bool keeps_topology(const TopologyReport& out, const TopologyReport& in);
+
 }  // namespace cvtmesh

@@ -23,13 +23,6 @@ std::vector<Triangle> crossings_made(std::vector<Triangle> crossing, const Trian
   return crossing;
 }
 
-// Whether `extraction` has `surface`'s topology, a manifold where the surface is one: as
-// remesh/topology_first judges a finished output (the finishing steps keep the topology).
-bool valid_topology(const TriangleMesh& extraction, const TriangleMesh& surface) {
-  const TopologyReport out = analyze_topology(extraction), in = analyze_topology(surface);
-  return same_topology(out, in) && (out.is_manifold() || !in.is_manifold());
-}
-
 }  // namespace
 
 void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
@@ -46,7 +39,9 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
   // (blade.off with 161 one-triangle holes, slivers far narrower than the spacing, at 4k: its
   // first two tries of topology_first, each crossing itself at 700 triangles, took 92 s and 113 s
   // guarded, 30 s and 31 s not).
-  if (crossing.empty() || !valid_topology(unfinished.mesh, input_crossings.surface())) return;
+  // (The finishing steps keep the topology: the extraction's is the output's.)
+  if (crossing.empty() || !keeps_topology(analyze_topology(unfinished.mesh), result.input_topology))
+    return;
   const std::unique_ptr<SurfaceProjector> before =
       crossing_surface(unfinished.mesh, self_crossing_triangles(unfinished.mesh));
   crossing = crossings_made(std::move(crossing), result.mesh, before.get());

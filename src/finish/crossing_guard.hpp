@@ -24,8 +24,8 @@ using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
 // where `input` crosses itself, if it does: crossings_of_its_own) that the extraction it started
 // from did not have, up to `attempts` times, runs it again on the extraction with the vertices
 // around them guarded (points_near_crossings, `reach` times the attempt's number), kept where
-// that leaves fewer such and no more of its own in all. Not where the extraction's topology is
-// not the input's surface's, or it is not a manifold where the surface is: that output is no
+// that leaves fewer such and no more of its own in all. Not where the extraction does not keep
+// the topology of the input (keeps_topology against `result.input_topology`): that output is no
 // valid one however it is finished (remesh/topology_first tries again), and each attempt costs a
 // run of the steps. Sets `result.output_crossing_triangles` and `result.vertices_guarded`.
 void finish_uncrossed(RemeshResult& result, InputCrossings& input, const FinishSteps& finish,

@@ -32,7 +32,6 @@ std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh,
 class InputCrossings {
  public:
   explicit InputCrossings(const TriangleMesh& surface) : surface_(surface) {}
-  const TriangleMesh& surface() const { return surface_; }
   // The crossing triangles as a surface (crossing_surface), searched on the first call; null
   // where there are none.
   const SurfaceProjector* get();

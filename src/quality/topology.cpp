@@ -115,4 +115,8 @@ bool same_topology(const TopologyReport& a, const TopologyReport& b) {
          a.boundary_loops == b.boundary_loops;
 }
 
+bool keeps_topology(const TopologyReport& out, const TopologyReport& in) {
+  return same_topology(out, in) && (out.is_manifold() || !in.is_manifold());
+}
+
 }  // namespace cvtmesh

@@ -31,9 +31,7 @@ constexpr int kFeatureGrowths = 3;
 // gives a manifold) without the last step's help; 1 when the last step removed triangles and
 // closing the holes gave the topology back; 0 when the topology differs.
 int topology_kept(const RemeshResult& r) {
-  const TopologyReport out = analyze_topology(r.mesh);
-  const TopologyReport& in = r.input_topology;
-  if (!same_topology(out, in) || (!out.is_manifold() && in.is_manifold())) return 0;
+  if (!keeps_topology(analyze_topology(r.mesh), r.input_topology)) return 0;
   return r.triangles_removed == 0 ? 2 : 1;
 }
 
