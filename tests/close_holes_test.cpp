@@ -328,6 +328,55 @@ TEST(SelfCrossings, FoundWhereSheetsCrossAndNowhereElse) {
   EXPECT_GT(count_true(self_crossing_triangles(figure_eight_tube(0.15, 0.15, 240, 24))), 1000u);
 }
 
+TEST(SelfCrossings, ASmallTriangleBesideLargeOnesAtTheInputsCrossingIsNotTheOutputsOwn) {
+  // The input: the planes z = 0 and x = 0, each in three strips, the middle ones 0.02 wide
+  // where they cross; those four triangles are its crossings.
+  const auto strips = [](bool vertical) {
+    TriangleMesh m;
+    for (const double a : {-1.0, -0.01, 0.01, 1.0})
+      for (const double y : {-1.0, 1.0})
+        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
+    for (Index i = 0; i < 3; ++i) {
+      m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+      m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+    }
+    return m;
+  };
+  const TriangleMesh planes = concatenate(strips(false), strips(true));
+  InputCrossings input(planes);
+  // An output with its crossing 0.03 off the input's: a triangle 0.01 across on z = 0, two
+  // large ones at its vertices, and the plane x = 0.03 as two triangles. The small triangle is
+  // 0.02 from the input's crossings, twice its own size, well within its neighbours'.
+  const auto output = [](double shift) {
+    TriangleMesh m{{{0.025, -0.005, 0},
+                    {0.035, -0.005, 0},
+                    {0.031, 0.005, 0},
+                    {0.5, -0.8, 0},
+                    {-0.4, 0.7, 0},
+                    {0.03, -1, -1},
+                    {0.03, 1, -1},
+                    {0.03, 1, 1},
+                    {0.03, -1, 1}},
+                   {{0, 1, 2}, {1, 0, 3}, {2, 4, 0}, {5, 6, 7}, {5, 7, 8}}};
+    for (Vec3& p : m.vertices) p.y += shift;
+    return m;
+  };
+  const TriangleMesh near = output(0);
+  const std::vector<bool> crossing = self_crossing_triangles(near);
+  ASSERT_TRUE(crossing[0]);
+  // By its own size, it is not at the input's crossings; by its neighbours', it is.
+  ASSERT_NE(input.get(), nullptr);
+  EXPECT_FALSE(at_crossing(*input.get(), near.vertices, near.triangles[0]));
+  const auto small = [](const std::vector<Triangle>& own) {
+    return std::count(own.begin(), own.end(), Triangle{0, 1, 2});
+  };
+  EXPECT_EQ(small(crossings_of_its_own(near, input)), 0);
+  // Moved 10 along y, far past the input: every crossing is the output's own.
+  const std::vector<Triangle> far = crossings_of_its_own(output(10), input);
+  EXPECT_EQ(small(far), 1);
+  EXPECT_EQ(far.size(), count_true(crossing));
+}
+
 TEST(SelfCrossingInput, ATubePressedThroughItselfKeepsItsTopology) {
   // The lobes are 0.15 wide at most and the tube 0.3 thick: it runs through itself nearly all
   // along. Without rounds of topology control the last step removes triangles there (11 at 400

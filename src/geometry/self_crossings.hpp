@@ -51,9 +51,11 @@ class InputCrossings {
 bool at_crossing(const SurfaceProjector& crossings, const std::vector<Vec3>& points,
                  const Triangle& t);
 
-// The triangles of an output that cross another where the input does not cross itself (not
-// at_crossing): a remesh of a surface that is embedded must be embedded too, but where the input
-// passes through itself its output does as well. The input is searched only if the output
+// The triangles of an output that cross another where the input does not cross itself: a remesh
+// of a surface that is embedded must be embedded too, but where the input passes through itself
+// its output does as well. A triangle is at the input's crossings as at_crossing says, with the
+// ball's radius the longest edge of the triangles at its vertices: a small triangle beside large
+// ones strays from the surface as far as they do. The input is searched only if the output
 // crosses itself somewhere.
 std::vector<Triangle> crossings_of_its_own(const TriangleMesh& output, InputCrossings& input);
 
