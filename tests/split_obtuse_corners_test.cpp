@@ -168,6 +168,25 @@ TEST(SplitObtuseCorners, UnderTheBarAFeatureEdgeAcrossIsHalvedOnItsCurve) {
   }
 }
 
+TEST(SplitObtuseCorners, TheMiddleOfAnEdgeWithAGuardedEndIsGuarded) {
+  // The inner corner's edge across, 0-1, halved under the bar: its middle is guarded (its changes
+  // checked for crossings, finish/crossing_guard) where either end is, and not otherwise.
+  for (const bool guarded : {false, true}) {
+    TriangleMesh m = inner_corner(114);
+    std::vector<VertexSupport> supports(m.vertices.size());
+    supports[1].guarded = guarded;
+    const CurveProjector none(m, Features{});
+    std::vector<Edge> edges;
+    CurveSplits along{none, supports, edges};
+    ASSERT_EQ(split_obtuse_corners(m, {}, SurfaceProjector(m), ObtuseCorners::under_bar, &along),
+              1u);
+    ASSERT_EQ(supports.size(), m.vertices.size());
+    EXPECT_EQ(m.vertices.back(), (Vec3{0, 0, 0}));
+    EXPECT_EQ(supports.back().kind, VertexSupport::Kind::surface);
+    EXPECT_EQ(supports.back().guarded, guarded);
+  }
+}
+
 TEST(SplitObtuseCorners, UnderTheBarABoundaryEdgeAcrossIsHalvedOnItsLoop) {
   // An ear of 130° whose edge across is the boundary (the strip without its lower triangle), its
   // corner an inner vertex: the boundary edge halved, one triangle becoming two.
