@@ -176,6 +176,16 @@ std::size_t add_surface_seeds(const MendContext& m, const std::vector<Vec3>& poi
   return added;
 }
 
+// Triangle `t` of an extraction in seeds (`vertex_seed`: per vertex of the extraction, its seed);
+// none for a triangle at an edge that a link flip halved, whose middle has no seed.
+std::optional<Triangle> in_seeds(Triangle t, const std::vector<Index>& vertex_seed) {
+  for (Index& v : t) {
+    if (v >= vertex_seed.size()) return std::nullopt;
+    v = vertex_seed[v];
+  }
+  return t;
+}
+
 // Inserts seeds where the extraction fails the ball property (`a`; `vertex_seed`: per vertex of
 // the extraction, its seed): the cut links mended (mend_missing_links); and, where the topology
 // is not the input's, from the seeds as extracted (one RVD for both), a seed in each piece of a
@@ -196,17 +206,14 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
     // man.off from 665 seeds added to 84).
     const SurfaceProjector* crossing = crossings.get();
     std::vector<Triangle> dual;  // the defects' triangles, in seeds
-    for (Triangle t : a.defects.triangles) {
-      // A triangle at an edge that a link flip halved has no dual among the seeds.
-      if (std::any_of(t.begin(), t.end(), [&](Index v) { return v >= vertex_seed.size(); }))
-        continue;
-      for (Index& v : t) v = vertex_seed[v];
+    for (const Triangle& t : a.defects.triangles) {
+      const std::optional<Triangle> s = in_seeds(t, vertex_seed);
       // The pinned rounds do not refine at crossings either: the last step mends them. Refining
       // there only makes smaller defects, round after round (man.off at 2k, --seed 2: 2,415 seeds
       // added and θmin 0.4° where the pinned rounds refined there; 415 and 16.8°, the last step
       // closing one hole, where they do not). The first rounds still refine there: a thin part
       // next to a crossing needs it (man.off and cow.off at 1k lost their topology without).
-      if (!pinned || !crossing || !at_crossing(*crossing, seeds, t)) dual.push_back(t);
+      if (s && (!pinned || !crossing || !at_crossing(*crossing, seeds, *s))) dual.push_back(*s);
     }
     // Cells that are no discs: in the first rounds only as a last resort, for an output whose
     // topology differs without a defect to show where; in the pinned rounds, which refine until
@@ -229,11 +236,8 @@ std::size_t seed_where_it_fails(const MendContext& m, const Assessment& a,
     // holes of its rim for four rounds, and the rounds stopped; with them, none were left after
     // five.
     std::vector<Triangle> dual;
-    for (Triangle t : a.crossing)
-      if (std::all_of(t.begin(), t.end(), [&](Index v) { return v < vertex_seed.size(); })) {
-        for (Index& v : t) v = vertex_seed[v];
-        dual.push_back(t);
-      }
+    for (const Triangle& t : a.crossing)
+      if (const std::optional<Triangle> s = in_seeds(t, vertex_seed)) dual.push_back(*s);
     found = defect_seeds(m.surface, seeds, dual, false, SplitCells::near_triangles, crossings.get(),
                          m.extraction);
   }
