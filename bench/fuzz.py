@@ -23,10 +23,12 @@ third of the runs, another --seed on half, one thread on a third:
 noise, dropouts and both.)
 
 A run fails when cvtmesh exits with an error, when the output has non-manifold edges or vertices
-where the input has none or a triangle of no area (an angle under 0.001°), or when its topology
-(components, Euler characteristic, boundary loops) differs from the input's; a soup's also when
-it differs from that of the copy it was made from, repaired, where that is a manifold (the
-repair must stitch it back; checked without --options). Runs over --slow seconds are listed
+where the input has none or a triangle of no area (an angle under 0.001°), when its topology
+(components, Euler characteristic, boundary loops) differs from the input's (a soup's also when
+it differs from that of the copy it was made from, repaired, where that is a manifold: the
+repair must stitch it back; checked without --options), or when its triangles pass through one
+another away from where the input's do (the report's output_crossing_triangles; since
+2026-12-07). Runs over --slow seconds are listed
 too. The same round always makes the same inputs and options (a mesh's randomness depends on
 the round and its place in the full list, not on --only), so a failure is reproduced by its
 round and name; --keep DIR keeps the failing inputs there.
@@ -284,6 +286,9 @@ def main():
                         problem = (f"topology: {report['components']} components, Euler "
                                    f"characteristic {report['euler_characteristic']}, "
                                    f"{report['boundary_loops']} loops")
+                    elif report["output_crossing_triangles"] > 0:
+                        problem = (f"{report['output_crossing_triangles']} triangles pass through "
+                                   "others away from the input's crossings")
                 print(f"{'FAIL' if problem else 'ok  '} {what}: {seconds:.1f} s"
                       + (f"; {problem}" if problem else ""), flush=True)
                 if problem:
