@@ -14,6 +14,7 @@
 namespace cvtmesh {
 namespace {
 
+using testing::concatenate;
 using testing::mapped_grid;
 
 std::size_t crossing_triangles(const TriangleMesh& mesh) {
@@ -126,6 +127,50 @@ TEST(CrossingGuard, WhereTheInputCrossesItselfElsewhereTheCrossingsMadeAreGuarde
   EXPECT_EQ(runs, 2);
   EXPECT_GT(unhelped.output_crossing_triangles, 0u);
   EXPECT_EQ(unhelped.vertices_guarded, 0u);
+}
+
+TEST(CrossingGuard, CrossingsMadeBesideTheExtractionsCrossingsAtTheInputsRunAgain) {
+  // The input: the planes z = 0 and x = 0, each in three strips, crossing along the y axis; its
+  // crossing triangles, the middle strips, are 0.02 wide. The extraction: the same planes, two
+  // triangles each, crossing there too, its crossing triangles covering the planes.
+  const auto strips = [](bool vertical) {
+    TriangleMesh m;
+    for (const double a : {-1.0, -0.01, 0.01, 1.0})
+      for (const double y : {-1.0, 1.0})
+        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
+    for (Index i = 0; i < 3; ++i) {
+      m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+      m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+    }
+    return m;
+  };
+  const TriangleMesh input = concatenate(strips(false), strips(true));
+  const auto square = [](bool vertical) {
+    TriangleMesh m;
+    for (const double a : {-1.0, 1.0})
+      for (const double y : {-1.0, 1.0})
+        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
+    m.triangles = {{0, 2, 3}, {0, 3, 1}};
+    return m;
+  };
+  const TriangleMesh extraction = concatenate(square(false), square(true));
+  // Steps that add two small triangles passing through each other 0.05 above z = 0, half a unit
+  // from the input's crossing: crossings of the output's own, made by the steps, within their
+  // longest edge of the extraction's crossing triangles.
+  int runs = 0;
+  const FinishSteps crossing_pair = [&](RemeshResult& r, const std::set<Vec3>&) {
+    ++runs;
+    const auto first = static_cast<Index>(r.mesh.vertices.size());
+    for (const Vec3& p : {Vec3{0.5, 0.5, 0.05}, Vec3{0.6, 0.5, 0.05}, Vec3{0.55, 0.6, 0.05},
+                          Vec3{0.55, 0.52, 0.02}, Vec3{0.55, 0.52, 0.08}, Vec3{0.55, 0.58, 0.05}})
+      r.mesh.vertices.push_back(p);
+    r.mesh.triangles.push_back({first, first + 1, first + 2});
+    r.mesh.triangles.push_back({first + 3, first + 4, first + 5});
+  };
+  const RemeshResult result = finished(extraction, input, crossing_pair);
+  // They are run again, guarded (nothing is near to guard here: the first output stays).
+  EXPECT_EQ(runs, 2);
+  EXPECT_EQ(result.output_crossing_triangles, 2u);
 }
 
 TEST(CrossingGuard, AnExtractionWithoutTheInputsTopologyIsNotGuarded) {
