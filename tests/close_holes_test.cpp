@@ -22,6 +22,7 @@ namespace {
 
 using testing::add_quad;
 using testing::concatenate;
+using testing::crossing_planes;
 using testing::cube;
 using testing::icosphere;
 using testing::torus;
@@ -329,20 +330,9 @@ TEST(SelfCrossings, FoundWhereSheetsCrossAndNowhereElse) {
 }
 
 TEST(SelfCrossings, ASmallTriangleBesideLargeOnesAtTheInputsCrossingIsNotTheOutputsOwn) {
-  // The input: the planes z = 0 and x = 0, each in three strips, the middle ones 0.02 wide
-  // where they cross; those four triangles are its crossings.
-  const auto strips = [](bool vertical) {
-    TriangleMesh m;
-    for (const double a : {-1.0, -0.01, 0.01, 1.0})
-      for (const double y : {-1.0, 1.0})
-        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
-    for (Index i = 0; i < 3; ++i) {
-      m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
-      m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
-    }
-    return m;
-  };
-  const TriangleMesh planes = concatenate(strips(false), strips(true));
+  // The input: the planes z = 0 and x = 0 crossing, each in three strips, the middle ones 0.02
+  // wide where they cross; those four triangles are its crossings.
+  const TriangleMesh planes = crossing_planes({-1, -0.01, 0.01, 1});
   InputCrossings input(planes);
   // An output with its crossing 0.03 off the input's: a triangle 0.01 across on z = 0, two
   // large ones at its vertices, and the plane x = 0.03 as two triangles. The small triangle is

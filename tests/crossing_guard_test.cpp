@@ -14,7 +14,7 @@
 namespace cvtmesh {
 namespace {
 
-using testing::concatenate;
+using testing::crossing_planes;
 using testing::mapped_grid;
 
 std::size_t crossing_triangles(const TriangleMesh& mesh) {
@@ -133,27 +133,8 @@ TEST(CrossingGuard, CrossingsMadeBesideTheExtractionsCrossingsAtTheInputsRunAgai
   // The input: the planes z = 0 and x = 0, each in three strips, crossing along the y axis; its
   // crossing triangles, the middle strips, are 0.02 wide. The extraction: the same planes, two
   // triangles each, crossing there too, its crossing triangles covering the planes.
-  const auto strips = [](bool vertical) {
-    TriangleMesh m;
-    for (const double a : {-1.0, -0.01, 0.01, 1.0})
-      for (const double y : {-1.0, 1.0})
-        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
-    for (Index i = 0; i < 3; ++i) {
-      m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
-      m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
-    }
-    return m;
-  };
-  const TriangleMesh input = concatenate(strips(false), strips(true));
-  const auto square = [](bool vertical) {
-    TriangleMesh m;
-    for (const double a : {-1.0, 1.0})
-      for (const double y : {-1.0, 1.0})
-        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
-    m.triangles = {{0, 2, 3}, {0, 3, 1}};
-    return m;
-  };
-  const TriangleMesh extraction = concatenate(square(false), square(true));
+  const TriangleMesh input = crossing_planes({-1, -0.01, 0.01, 1});
+  const TriangleMesh extraction = crossing_planes({-1, 1});
   // Steps that add two small triangles passing through each other 0.05 above z = 0, half a unit
   // from the input's crossing: crossings of the output's own, made by the steps, within their
   // longest edge of the extraction's crossing triangles.

@@ -374,6 +374,21 @@ TriangleMesh transformed(TriangleMesh mesh, double scale, const Vec3& offset) {
   return mesh;
 }
 
+TriangleMesh crossing_planes(const std::vector<double>& cuts) {
+  const auto plane = [&](bool vertical) {
+    TriangleMesh m;
+    for (const double a : cuts)
+      for (const double y : {-1.0, 1.0})
+        m.vertices.push_back(vertical ? Vec3{0, y, a} : Vec3{a, y, 0});
+    for (Index i = 0; i + 1 < cuts.size(); ++i) {
+      m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+      m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+    }
+    return m;
+  };
+  return concatenate(plane(false), plane(true));
+}
+
 TriangleMesh shuffled(const TriangleMesh& mesh, std::uint64_t seed, std::vector<Index>* new_id) {
   std::mt19937_64 random(seed);
   std::vector<Index> id(mesh.vertices.size());

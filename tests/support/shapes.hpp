@@ -85,6 +85,11 @@ TriangleMesh with_t_junction(TriangleMesh mesh, std::size_t t, int points);
 // Appends the quad a-b-c-d (in that order round it) as triangles (a, b, c) and (a, c, d).
 void add_quad(TriangleMesh& mesh, Index a, Index b, Index c, Index d);
 
+// The planes z = 0 and x = 0 over [-1, 1]², crossing along the y axis, each cut across x (and z)
+// at `cuts` (increasing, from -1 to 1) into strips of two triangles: two components, each a disc.
+// With cuts {-1, -0.01, 0.01, 1}, the triangles that cross are the middle strips', 0.02 wide.
+TriangleMesh crossing_planes(const std::vector<double>& cuts);
+
 // Both meshes in one, `b` after `a` (indices of `b` shifted).
 TriangleMesh concatenate(const TriangleMesh& a, const TriangleMesh& b);
 
