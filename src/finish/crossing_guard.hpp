@@ -21,10 +21,10 @@ class InputCrossings;
 using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
 
 // Runs `finish` on `result`; then, while its output has crossing triangles of its own (away from
-// where `input` crosses itself, if it does: crossings_of_its_own) away from those of the
-// extraction it started from (its own too), up to `attempts` times, runs it again on the extraction
-// with the vertices around them guarded (points_near_crossings, `reach` times the attempt's
-// number), kept where that leaves fewer such and no more of its own in all. Not where the
+// where `input` crosses itself, if it does: crossings_of_its_own) away from the crossings of its
+// own that the extraction it started from had, up to `attempts` times, runs it again on the
+// extraction with the vertices around them guarded (points_near_crossings, `reach` times the
+// attempt's number), kept where that leaves fewer such and no more of its own in all. Not where the
 // extraction does not keep the topology of the input (keeps_topology against
 // `result.input_topology`): that output is no valid one however it is finished
 // (remesh/topology_first tries again), and each attempt costs a run of the steps. Sets
