@@ -45,11 +45,8 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
   // (The finishing steps keep the topology: the extraction's is the output's.)
   if (crossing.empty() || !keeps_topology(analyze_topology(unfinished.mesh), result.input_topology))
     return;
-  std::vector<Triangle> own_before = crossings_of_its_own(unfinished.mesh, input_crossings);
-  const std::unique_ptr<SurfaceProjector> before =
-      own_before.empty() ? nullptr
-                         : std::make_unique<SurfaceProjector>(
-                               TriangleMesh{unfinished.mesh.vertices, std::move(own_before)});
+  const std::unique_ptr<SurfaceProjector> before = crossing_surface(
+      unfinished.mesh.vertices, crossings_of_its_own(unfinished.mesh, input_crossings));
   crossing = crossings_made(std::move(crossing), result.mesh, before.get());
   std::set<Vec3> guarded;
   for (int attempt = 1; attempt <= attempts && !crossing.empty(); ++attempt) {

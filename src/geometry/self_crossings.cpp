@@ -155,20 +155,20 @@ std::vector<bool> self_crossing_triangles(const TriangleMesh& mesh) {
   return crossing;
 }
 
-std::unique_ptr<SurfaceProjector> crossing_surface(const TriangleMesh& mesh,
-                                                   const std::vector<bool>& crossing) {
-  TriangleMesh part{mesh.vertices, {}};
-  for (std::size_t t = 0; t < crossing.size(); ++t)
-    if (crossing[t]) part.triangles.push_back(mesh.triangles[t]);
-  if (part.triangles.empty()) return nullptr;
-  return std::make_unique<SurfaceProjector>(part);
+std::unique_ptr<SurfaceProjector> crossing_surface(const std::vector<Vec3>& points,
+                                                   std::vector<Triangle> crossing) {
+  if (crossing.empty()) return nullptr;
+  return std::make_unique<SurfaceProjector>(TriangleMesh{points, std::move(crossing)});
 }
 
 const SurfaceProjector* InputCrossings::get() {
   if (!searched_) {
-    const std::vector<bool> crossing = self_crossing_triangles(surface_);
-    count_ = static_cast<std::size_t>(std::count(crossing.begin(), crossing.end(), true));
-    found_ = crossing_surface(surface_, crossing);
+    const std::vector<bool> flags = self_crossing_triangles(surface_);
+    std::vector<Triangle> crossing;
+    for (std::size_t t = 0; t < flags.size(); ++t)
+      if (flags[t]) crossing.push_back(surface_.triangles[t]);
+    count_ = crossing.size();
+    found_ = crossing_surface(surface_.vertices, std::move(crossing));
     searched_ = true;
   }
   return found_.get();
