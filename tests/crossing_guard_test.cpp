@@ -89,7 +89,7 @@ TEST(CrossingGuard, WhereGuardingDoesNotHelpTheFirstOutputStaysAndItsCrossingsAr
   EXPECT_EQ(result.vertices_guarded, 0u);
 }
 
-TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfThereNothingRunsAgain) {
+TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfThereTheFirstOutputStays) {
   const TriangleMesh plain = grid(), crossing = folded(plain, kCentre);
   const FinishSteps nothing = [](RemeshResult&, const std::set<Vec3>&) {};
   int runs = 0;
@@ -101,12 +101,31 @@ TEST(CrossingGuard, WhereTheInputOrTheExtractionCrossesItselfThereNothingRunsAga
   const RemeshResult of_input = finished(crossing, crossing, counted);
   EXPECT_EQ(runs, 1);
   EXPECT_EQ(of_input.output_crossing_triangles, 0u);
-  // The extraction crossed itself (topology control's rounds left it): counted, not guarded.
+  // The extraction crossed itself (topology control's rounds left it): the steps run once more
+  // with the vertices there guarded, which leaves as many; counted, not guarded.
   runs = 0;
   const RemeshResult of_extraction = finished(crossing, plain, counted);
-  EXPECT_EQ(runs, 1);
+  EXPECT_EQ(runs, 2);
   EXPECT_EQ(of_extraction.output_crossing_triangles, crossing_triangles(crossing));
   EXPECT_EQ(of_extraction.vertices_guarded, 0u);
+}
+
+TEST(CrossingGuard, CrossingsAtTheExtractionsOwnThatTheStepsMendAndMakeAgainRunAgain) {
+  // The extraction is folded at the centre. Steps that unfold it, then fold the centre's
+  // neighbour unless it is guarded: their crossings lie at the extraction's own, which shield
+  // them from the first attempts (crossings_made), and guarding them leaves none.
+  const TriangleMesh plain = grid(), extraction = folded(plain, kCentre);
+  constexpr Index kNeighbour = kCentre + 1;
+  int runs = 0;
+  const FinishSteps mend_then_fold = [&](RemeshResult& r, const std::set<Vec3>& guarded) {
+    ++runs;
+    r.mesh = guarded.contains(plain.vertices[kNeighbour]) ? plain : folded(plain, kNeighbour);
+  };
+  const RemeshResult result = finished(extraction, plain, mend_then_fold);
+  EXPECT_EQ(runs, 2);
+  EXPECT_EQ(result.output_crossing_triangles, 0u);
+  EXPECT_GT(result.vertices_guarded, 0u);
+  EXPECT_EQ(result.mesh.vertices, plain.vertices);
 }
 
 TEST(CrossingGuard, WhereTheInputCrossesItselfElsewhereTheCrossingsMadeAreGuarded) {
