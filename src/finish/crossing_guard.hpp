@@ -24,12 +24,13 @@ using FinishSteps = std::function<void(RemeshResult&, const std::set<Vec3>&)>;
 // where `input` crosses itself, if it does: crossings_of_its_own) away from the crossings of its
 // own that the extraction it started from had, up to `attempts` times, runs it again on the
 // extraction with the vertices around them guarded (points_near_crossings, `reach` times the
-// attempt's number), kept where that leaves fewer such and no more of its own in all. Where some
-// of those left are at the extraction's own crossings, the same again around all of them, kept
-// where that leaves fewer of its own in all. Not where the extraction does not keep the topology
-// of the input (keeps_topology against `result.input_topology`): that output is no valid one
-// however it is finished (remesh/topology_first tries again), and each attempt costs a run of the
-// steps. Sets `result.output_crossing_triangles` and `result.vertices_guarded`.
+// attempt's number), kept where that leaves fewer such and no more of its own in all. Where some of
+// those left are at the extraction's own crossings, the same again around all of them (unless each
+// is a triangle of the extraction, left as it was), kept where that leaves fewer of its own in all.
+// Not where the extraction does not keep the topology of the input (keeps_topology against
+// `result.input_topology`): that output is no valid one however it is finished
+// (remesh/topology_first tries again), and each attempt costs a run of the steps. Sets
+// `result.output_crossing_triangles` and `result.vertices_guarded`.
 void finish_uncrossed(RemeshResult& result, InputCrossings& input, const FinishSteps& finish,
                       int attempts, double reach);
 
