@@ -62,36 +62,42 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
   // (The finishing steps keep the topology: the extraction's is the output's.)
   if (crossing.empty() || !keeps_topology(analyze_topology(unfinished.mesh), result.input_topology))
     return;
-  std::vector<Triangle> own = crossing;  // the output's crossings of its own, all of them
+  std::vector<Triangle> own = std::move(crossing);  // the output's crossings of its own
   const std::unique_ptr<SurfaceProjector> before = crossing_surface(
       unfinished.mesh.vertices, crossings_of_its_own(unfinished.mesh, input_crossings));
-  crossing = crossings_made(std::move(crossing), result.mesh, before.get());
   std::set<Vec3> guarded;
-  // Runs the steps again with `more` guarded; kept where that leaves fewer of the crossings
-  // `counted` picks (of the output's own) than `now`, and no more of its own in all (camel.off
-  // at 5k, its input crossing itself: guarded, fewer made but 29 of its own where there were 25,
-  // and the Hausdorff max 0.507% -> 0.571%). Returns whether it was kept.
-  const auto try_guarding = [&](std::set<Vec3> more, std::size_t now, const auto& counted) {
-    RemeshResult again = unfinished;
-    finish(again, more);
-    std::vector<Triangle> all = crossings_of_its_own(again.mesh, input_crossings);
-    if (counted(all, again.mesh).size() >= now || all.size() > own.size()) return false;
-    result = std::move(again);
-    guarded = std::move(more);
-    result.vertices_guarded = guarded.size();
-    result.output_crossing_triangles = all.size();
-    own = std::move(all);
-    return true;
+  // The steps run again with the vertices near the crossings `counted` picks of the output's own
+  // guarded, within `reach` times the attempt's number, while each run leaves fewer of those and
+  // no more of its own in all (camel.off at 5k, its input crossing itself: guarded, fewer made
+  // but 29 of its own where there were 25, and the Hausdorff max 0.507% -> 0.571%). With
+  // `reach_past_guarded`, an attempt whose guard adds no vertex (the same run as the output kept)
+  // is passed over for the next, wider one. Returns the crossings it picks that are left.
+  const auto guard_around = [&](const auto& counted, bool reach_past_guarded) {
+    std::vector<Triangle> targets = counted(own, result.mesh);
+    for (int attempt = 1; attempt <= attempts && !targets.empty(); ++attempt) {
+      std::set<Vec3> more = guarded;
+      more.merge(points_near_crossings(unfinished.mesh, result.mesh, targets, reach * attempt));
+      if (reach_past_guarded && more.size() == guarded.size()) continue;
+      RemeshResult again = unfinished;
+      finish(again, more);
+      std::vector<Triangle> all = crossings_of_its_own(again.mesh, input_crossings);
+      std::vector<Triangle> left = counted(all, again.mesh);
+      if (left.size() >= targets.size() || all.size() > own.size()) break;
+      result = std::move(again);
+      guarded = std::move(more);
+      result.vertices_guarded = guarded.size();
+      result.output_crossing_triangles = all.size();
+      own = std::move(all);
+      targets = std::move(left);
+    }
+    return targets;
   };
-  const auto made = [&](std::vector<Triangle> all, const TriangleMesh& mesh) {
-    return crossings_made(std::move(all), mesh, before.get());
-  };
-  for (int attempt = 1; attempt <= attempts && !crossing.empty(); ++attempt) {
-    std::set<Vec3> more = guarded;
-    more.merge(points_near_crossings(unfinished.mesh, result.mesh, crossing, reach * attempt));
-    if (!try_guarding(std::move(more), crossing.size(), made)) break;
-    crossing = made(own, result.mesh);
-  }
+  // First those the steps made, away from the extraction's own crossings.
+  const std::vector<Triangle> made = guard_around(
+      [&](std::vector<Triangle> all, const TriangleMesh& mesh) {
+        return crossings_made(std::move(all), mesh, before.get());
+      },
+      false);
   // Then all of the output's own crossings that are left, those at the extraction's own too: the
   // steps before the sweeps may mend those, for the sweeps to cross there again (a fuzzed
   // ChineseDragon-10kv.off, a soup with a tenth of its triangles turned, adaptive at 300: 3
@@ -100,14 +106,8 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
   // Not where none is left there (all were tried above), nor where each is a triangle of the
   // extraction that the steps left as it was: no guard changes those (a fuzzed
   // ChineseDragon-10kv with noise and dropouts at 300: its run again gave the same output).
-  if (crossing.size() == own.size() || as_extracted(own, result.mesh, unfinished.mesh)) return;
-  const auto all_of = [](std::vector<Triangle> all, const TriangleMesh&) { return all; };
-  for (int attempt = 1; attempt <= attempts && !own.empty(); ++attempt) {
-    std::set<Vec3> more = guarded;
-    more.merge(points_near_crossings(unfinished.mesh, result.mesh, own, reach * attempt));
-    if (more.size() == guarded.size()) continue;  // the output kept: the same again
-    if (!try_guarding(std::move(more), own.size(), all_of)) break;
-  }
+  if (made.size() == own.size() || as_extracted(own, result.mesh, unfinished.mesh)) return;
+  guard_around([](std::vector<Triangle> all, const TriangleMesh&) { return all; }, true);
 }
 
 std::set<Vec3> points_near_crossings(const TriangleMesh& unfinished, const TriangleMesh& finished,
