@@ -6,21 +6,24 @@ scales (10^-3 to 10^3) and moves it at random, damages it as the round's number 
 remeshes it with the defaults at a random count (300, 1.5k, 4k or 9k), with --adaptive on about a
 third of the runs, another --seed on half, one thread on a third:
 
-    round % 6 == 0   noise: every vertex moved by 5% of the median edge length
-    round % 6 == 1   dropouts: 1% of the triangles removed, apart from one another and from the
+    round % 7 == 0   noise: every vertex moved by 5% of the median edge length
+    round % 7 == 1   dropouts: 1% of the triangles removed, apart from one another and from the
                      boundary (each a hole of one triangle; the input stays a manifold)
-    round % 6 == 2   both, milder: noise of 2%, 0.3% of the triangles removed
-    round % 6 == 3   a soup, as a vision pipeline or an STL export gives: every face with
+    round % 7 == 2   both, milder: noise of 2%, 0.3% of the triangles removed
+    round % 7 == 3   a soup, as a vision pipeline or an STL export gives: every face with
                      vertices of its own, one face in ten turned the other way
-    round % 6 == 4   slivers, as a CAD tessellation has: 3% of the edges inside the surface
+    round % 7 == 4   slivers, as a CAD tessellation has: 3% of the edges inside the surface
                      split at a point 0.2-2% of their length from one end (each of the edge's
                      two triangles in two: a needle and a sliver), the surface unchanged
-    round % 6 == 5   holes: three discs removed, each the triangles at a vertex and its
+    round % 7 == 5   holes: three discs removed, each the triangles at a vertex and its
                      neighbours (about 20, under a tenth of the mesh), apart from one another
                      and from the boundary
+    round % 7 == 6   squashed: scaled by 0.05-0.3 along a random direction, nothing else
+                     (every part a thin plate, sheets closer than the spacing: still embedded,
+                     so its output must be too)
 
 (Until 2026-12-05 the kinds went by round % 3: rounds 3, 4 and 5 that earlier notes cite were
-noise, dropouts and both.)
+noise, dropouts and both; until 2026-12-07 by round % 6, round 6 was noise.)
 
 A run fails when cvtmesh exits with an error, when the output has non-manifold edges or vertices
 where the input has none or a triangle of no area (an angle under 0.001°), when its topology
@@ -94,10 +97,13 @@ def damaged(vertices, faces, round_number, rng):
     rotation, _ = np.linalg.qr(rng.normal(size=(3, 3)))
     scale = 10 ** rng.uniform(-3, 3)
     shift = rng.normal(size=3) * scale * rng.uniform(0, 100)
-    points = vertices @ rotation.T * scale + shift
+    mode = round_number % 7
+    points = vertices @ rotation.T
+    if mode == 6:
+        points[:, 2] *= rng.uniform(0.05, 0.3)
+    points = points * scale + shift
     triangles = np.array([f[:3] for f in faces if len(f) >= 3])
     edge = np.median(np.linalg.norm(points[triangles[:, 0]] - points[triangles[:, 1]], axis=1))
-    mode = round_number % 6
     noise = {0: 0.05, 2: 0.02}.get(mode, 0.0)
     if noise > 0:
         points = points + rng.normal(size=points.shape) * noise * edge

@@ -12,6 +12,7 @@
 #include "features/curve_projector.hpp"
 #include "features/edge_uses.hpp"
 #include "finish/improve_shapes.hpp"
+#include "geometry/self_crossings.hpp"
 #include "geometry/surface_projector.hpp"
 #include "support/shapes.hpp"
 
@@ -317,6 +318,39 @@ TEST(ImproveShapes, ACrowdedCreaseVertexCollapsesAlongItsCurve) {
   EXPECT_EQ(traced, ridge.edges);  // sorted alike: a-b is back, a-x and x-b are gone
   EXPECT_NEAR(measure_quality(mesh).angle_min_deg, measure_quality(start).angle_min_deg, 1e-9);
   EXPECT_EQ(mesh.triangles.size(), start.triangles.size());
+}
+
+// A guarded crease vertex 0.01 above its ridge, between its two neighbours on the ridge crammed
+// against it, one each side, all else held: a step along the curve either way is worse, and the
+// ridge point below it, where it went unchecked, puts its triangles through a separate one
+// standing just under them (and strays from where they were). It stays where it is, and nothing
+// crosses (a guarded vertex of a fuzzed blobby_3cc.off, a thirtieth of an edge off its crease,
+// went through the sheet beside it so: see finish/crossing_guard).
+TEST(ImproveShapes, ACreaseVertexGoesOntoItsCurveOnlyWhereAMoveMay) {
+  TriangleMesh mesh = roof(8);
+  const SurfaceProjector surface(roof(40));
+  const CurveProjector curves(roof(40), row_of_roof(40, 20));
+  const Features features = row_of_roof(8, 4);
+  const std::vector<Index>& ridge = features.curves[0].vertices;
+  const Index v = ridge[4];
+  mesh.vertices[ridge[3]].x = -0.06;
+  mesh.vertices[ridge[5]].x = 0.06;
+  mesh.vertices[v].z = 0.01;
+  // Upright in the plane y = 0.005, its top at z = 0.002, under v's triangles there (z > 0.003)
+  // and above the ridge's (z = -0.005).
+  const auto first = static_cast<Index>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(),
+                       {{-0.01, 0.005, -0.02}, {0.01, 0.005, -0.02}, {0, 0.005, 0.002}});
+  mesh.triangles.push_back({first, first + 1, first + 2});
+  ASSERT_EQ(std::ranges::count(self_crossing_triangles(mesh), true), 0);
+  std::vector<VertexSupport> support(mesh.vertices.size(), {VertexSupport::Kind::fixed, 0});
+  support[v] = {VertexSupport::Kind::curve, 0, true};
+  const Vec3 start = mesh.vertices[v];
+  TriangleMesh guarded = mesh;
+  const ShapeImprovement done = improve(guarded, surface, &curves, support, features.edges, 5);
+  EXPECT_GT(done.searches, 0u);
+  EXPECT_EQ(guarded.vertices[v], start);
+  EXPECT_EQ(std::ranges::count(self_crossing_triangles(guarded), true), 0);
 }
 
 // A flat tetrahedron (x just above the middle of base c-d-y, nearer y) with a fin on edge c-d,

@@ -858,15 +858,24 @@ class ShapeImprover {
     }
     const WorstShape before = star_shape(v);
     WorstShape best = before;
-    // Where v would do better than `best`, with nothing folded or taken off the surface.
+    // Whether v may stand at q: none of its triangles folded or taken off the surface, nor,
+    // guarded, passing through another.
+    const auto allowed_at = [&](const Vec3& q) {
+      p[v] = q;
+      const bool allowed =
+          keeps_surface(v, normals) && !(support_[v].guarded && crosses_another(around_[v]));
+      p[v] = from;
+      return allowed;
+    };
+    // Where v would do better than `best`, and may stand.
     const auto better_at = [&](const Vec3& q) {
       p[v] = q;
       WorstShape now;
-      const bool better = star_better_than(v, best, now) && keeps_surface(v, normals) &&
-                          !(support_[v].guarded && crosses_another(around_[v]));
+      const bool better = star_better_than(v, best, now);
       p[v] = from;
-      if (better) best = now;
-      return better;
+      if (!better || !allowed_at(q)) return false;
+      best = now;
+      return true;
     };
     // Whether v's triangles alone would do better with v at q: cheap, no projection.
     const auto promising = [&](const Vec3& q) {
@@ -892,8 +901,9 @@ class ShapeImprover {
         }
       }
     }
-    if (best.score() < kSearchBelow) at = searched_from(v, at, better_at, promising);
-    // It moves exactly when it found a better place (better_than asks for a higher score).
+    if (best.score() < kSearchBelow) at = searched_from(v, at, better_at, promising, allowed_at);
+    // It moves when it found a better place (better_than asks for a higher score), or onto its
+    // curve.
     if (at == from) {
       stuck_at_[v] = ++clock_;
       return false;
@@ -981,22 +991,30 @@ class ShapeImprover {
 
   // The compass search of try_move, from `at`: returns the best place found. On the surface, a
   // step is projected (the search's main cost) only when it looks better in the tangent plane.
-  template <class BetterAt, class Promising>
-  Vec3 searched_from(Index v, Vec3 at, const BetterAt& better_at,
-                     const Promising& promising) const {
+  // Along a curve, from its point nearest to `at`, where v goes even if no step is better, as
+  // long as `allowed_at` lets it stand there.
+  template <class BetterAt, class Promising, class AllowedAt>
+  Vec3 searched_from(Index v, Vec3 at, const BetterAt& better_at, const Promising& promising,
+                     const AllowedAt& allowed_at) const {
     const double size = mean_edge_length(v);
     if (support_[v].kind == VertexSupport::Kind::curve) {
       const std::size_t c = support_[v].curve;
       double s = curves_->nearest(c, at).arclength;
       double step = kFirstStep * size;
+      bool found = false;
       for (int k = 0; k < kMaxSearchSteps && step >= kLastStep * size; ++k) {
         const double to = better_at(curves_->at(c, s + step))   ? s + step
                           : better_at(curves_->at(c, s - step)) ? s - step
                                                                 : s;
         if (to == s) step /= 2;
+        found |= to != s;
         s = to;
       }
-      return curves_->at(c, s);
+      // A step found is checked; the curve's point nearest to v is not, and v may be off its
+      // curve (a guarded vertex of a fuzzed blobby_3cc.off, a thirtieth of an edge off its
+      // crease, went there through the sheet beside it).
+      const Vec3 onto = curves_->at(c, s);
+      return found || onto == at || allowed_at(onto) ? onto : at;
     }
     Vec3 normal{};
     for (Index t : around_[v]) {
