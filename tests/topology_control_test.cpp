@@ -1178,6 +1178,17 @@ TEST(HardCases, ATubeTooThinForTheCountAskedForGetsMoreVertices) {
   }
 }
 
+// A torus whose tube is a third as thick again (0.01), at 20 vertices: its genus takes several
+// hundred, past four times the count; under kSmallCount (remesh/topology_first) the count goes on
+// doubling, as a small remesh costs little (femur.off at 50 kept its two thin handles at 400).
+TEST(HardCases, ATubeFarTooThinForASmallCountGetsAsManyVerticesAsItNeeds) {
+  const TriangleMesh ring = torus(1.0, 0.01, 1000, 12);
+  const RemeshResult r = remesh_with_seed(ring, 20, 1);
+  expect_topology_kept(r, ring);
+  EXPECT_GT(r.count_grown, 3 * 20u);  // more than 4 times the count
+  EXPECT_GE(r.mesh.vertices.size(), 20 + r.count_grown);
+}
+
 // A torus whose tube narrows from radius 0.3 to 0.003 (nu steps round, nv about): thick on one
 // side, a hundred times thinner on the other.
 TriangleMesh tapered_torus(int nu, int nv) {
@@ -1257,14 +1268,14 @@ TEST(HardCases, ATubeTooThinForTheCountGetsMoreVerticesWithAdaptiveSizesToo) {
   EXPECT_GE(r.mesh.vertices.size(), 60 + r.count_grown);
 }
 
-// Thinner still (0.06 around against 0.1), the cells wrap around the tube at 4 times the count
-// too, and meet in no triangle: an error that says so, not an empty output.
+// Thinner still (0.003 around), the cells wrap around the tube at every count tried (to 1,280
+// at 40), and meet in no triangle: an error that says so, not an empty output.
 TEST(HardCases, ATubeFarTooThinForTheCountAskedForIsAnError) {
   RemeshSettings s;
   s.vertices = 40;
   s.hausdorff.reset();
   try {
-    remesh(torus(1.0, 0.01, 400, 12), s);
+    remesh(torus(1.0, 0.0005, 400, 12), s);
     FAIL() << "an output for cells that wrap around the tube";
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("ask for more vertices"), std::string::npos) << e.what();
