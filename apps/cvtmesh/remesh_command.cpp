@@ -151,7 +151,7 @@ int run_remesh(RemeshOptions o) {
   if (!r.feature_edges_dropped.empty())
     fmt::print(stderr,
                "{}: warning: {} sharp edges not kept as features: tracing them cost the input's "
-               "topology\n",
+               "topology or made the output pass through itself\n",
                o.output, r.feature_edges_dropped.size());
   if (r.sizes_adapted)
     fmt::print(stderr,

@@ -126,8 +126,9 @@ struct RemeshResult {
   std::vector<Edge> feature_edges;        // output edges that trace the input's feature curves
   std::size_t feature_edges_missing = 0;  // links of the curves' seed chains the output lacks
   // Sharp edges of the input (kept for their dihedral angle alone, not boundaries, non-manifold
-  // or user edges) left out because the output kept the input's topology only without them:
-  // topology wins (issue 18). Sorted; empty when every crease was kept.
+  // or user edges) left out because the output kept the input's topology, or passed through
+  // itself where the input does not, only with them: validity wins (issue 18). Sorted; empty
+  // when every crease was kept.
   std::vector<Edge> feature_edges_dropped;
   // Uniform sizes gave way (issue 18: validity first): the output of even edge lengths did not
   // keep the input's topology, and one remeshed again with adaptive sizes (SizingSettings's

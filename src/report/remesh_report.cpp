@@ -106,8 +106,8 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   }
   if (!r.feature_edges_dropped.empty())
     text += fmt::format(
-        "  features  {} sharp edges dropped: the output keeps the input's topology only without "
-        "them\n",
+        "  features  {} sharp edges dropped: traced, they cost the input's topology or made the "
+        "output pass through itself\n",
         r.feature_edges_dropped.size());
   if (r.gap_length_min > 0)
     text += fmt::format(
