@@ -24,7 +24,7 @@ constexpr double kFallbackGradation = 1.5;
 
 // How many times the count may double for the topology: at most 4 times the count asked for,
 // and more while it is under kSmallCount, where a remesh costs little (femur.off at 50: its two
-// handles, 0.0003 across, lost at 100 and 200; kept at 800).
+// handles, 0.0003 across, lost at 100 and 200; kept at 400, adaptive).
 constexpr int kCountDoublings = 2;
 constexpr std::size_t kSmallCount = 1000;
 // How many times the count may grow for features that need more seeds than it leaves.
