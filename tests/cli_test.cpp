@@ -555,6 +555,7 @@ TEST(CliRemesh, JsonReportHasQualityAndOptimizerKeys) {
                           "input_crossing_triangles",
                           "output_crossing_triangles",
                           "vertices_guarded",
+                          "vertices_splitting_crossings",
                           "mend_rounds",
                           "shape_flips",
                           "shape_moves",

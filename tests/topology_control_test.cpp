@@ -923,6 +923,25 @@ TEST(TopologyControlSharedData, CreasesThatMakeTheOutputCrossItselfAreDroppedAnd
   EXPECT_FALSE(r.feature_edges_dropped.empty());
 }
 
+TEST(TopologyControlSharedData, ChordsThroughThinWallsAreHalvedUntilNoneCrosses) {
+  // couplingdown.off at 100 (grown to 439, adaptive, for its genus 9): its walls between the
+  // holes, about 0.02 thick, stood under edges 0.15 long, and 10 triangles sagged through the
+  // wall beside them; with those edges halved, none (finish/split_crossings).
+  if (!std::filesystem::exists(shared_data()))
+    GTEST_SKIP() << "shared test meshes not found at " << shared_data();
+  const TriangleMesh coupling = shared_mesh("couplingdown.off");
+  RemeshSettings s;
+  s.vertices = 100;
+  s.hausdorff.reset();
+  const RemeshResult r = remesh(coupling, s);
+  expect_topology_kept(r, coupling);
+  EXPECT_TRUE(analyze_topology(r.mesh).consistently_oriented);
+  EXPECT_EQ(crossing_triangles(coupling), 0u);
+  EXPECT_EQ(crossing_triangles(r.mesh), 0u);
+  EXPECT_EQ(r.output_crossing_triangles, 0u);
+  EXPECT_GT(r.vertices_splitting_crossings, 0u);
+}
+
 // The manifold guarantee and the input's topology (issue 18), with the defaults; and where the
 // input does not pass through itself, no output triangle passes through another.
 void expect_valid_remesh(const TriangleMesh& input, std::size_t vertices) {

@@ -187,10 +187,13 @@ struct RemeshResult {
   // Output triangles that pass through another where the input does not pass through itself
   // (issue 18: a valid output): topology control refines where its extractions cross
   // themselves, and where the finishing steps made crossings, they are run again with each change
-  // around them checked for crossings (`vertices_guarded`: how many vertices that guarded). Not 0
-  // only where neither removed them all, within the rounds' caps.
+  // around them checked for crossings (`vertices_guarded`: how many vertices that guarded); where
+  // some are left, the long edges there are halved, their middles on their own side of the
+  // input (finish/split_crossings; `vertices_splitting_crossings`: the vertices that added, the
+  // count given way to validity). Not 0 only where none of that removed them all.
   std::size_t output_crossing_triangles = 0;
   std::size_t vertices_guarded = 0;
+  std::size_t vertices_splitting_crossings = 0;
   // Flat or folded ears removed at the boundary (finish/flat_ears): triangles whose two edges at
   // one vertex, not a corner, were boundary edges meeting at 160° or more (120° at a vertex that
   // is no seed: a cell's far piece), or that folded back more than 120° over their neighbour

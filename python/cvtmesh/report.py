@@ -204,7 +204,7 @@ def remesh_lines(remesh):
             "feature_edges_dropped", "sizes_adapted", "count_grown", "corners_in",
             "corners_out", "feature_hausdorff_max_pct", "seeds_added", "islands_seeded",
             "seeds_refined", "links_mended", "triangles_removed", "holes_closed", "vertices_closing_holes", "input_crossing_triangles",
-            "output_crossing_triangles", "vertices_guarded",
+            "output_crossing_triangles", "vertices_guarded", "vertices_splitting_crossings",
             "flat_ears_removed", "flat_pairs_merged", "valence_three_removed", "obtuse_corners_split",
             "short_edges_collapsed",
             "mend_rounds", "time_s"]

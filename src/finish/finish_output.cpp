@@ -16,6 +16,7 @@
 #include "finish/bar_shapes.hpp"
 #include "finish/best_round.hpp"
 #include "finish/cell_normal_points.hpp"
+#include "finish/changed_vertices.hpp"
 #include "finish/coincident_edges.hpp"
 #include "finish/fit_surface.hpp"
 #include "finish/flat_ears.hpp"
@@ -98,22 +99,6 @@ std::vector<VertexSupport> vertex_supports(const TriangleMesh& output,
 // output better.
 constexpr int kHalvingRounds = 3;
 
-// The vertices within two rings of those from `first_new` on: where halving an edge changes the
-// shapes, and the sweeps after the first round's need to look (all over the mesh in every round,
-// they took femur.off at 1k, whose stacked sheets leave a hundred bad triangles, from 2.3 s to
-// 4.3 s; 3.7 s with only the first round's all over it).
-std::vector<bool> around_new_vertices(const TriangleMesh& mesh, std::size_t first_new) {
-  std::vector<bool> near(mesh.vertices.size(), false);
-  std::fill(near.begin() + static_cast<std::ptrdiff_t>(first_new), near.end(), true);
-  for (int ring = 0; ring < 2; ++ring) {
-    std::vector<bool> grown = near;
-    for (const Triangle& t : mesh.triangles)
-      if (near[t[0]] || near[t[1]] || near[t[2]]) grown[t[0]] = grown[t[1]] = grown[t[2]] = true;
-    near = std::move(grown);
-  }
-  return near;
-}
-
 // Per vertex, the input angle under 30° of a tip the output traces there (else 0): a vertex within
 // `reach` of one of `narrow` (narrow_angle_at_vertices) with an angle under 1.5 times it in one
 // of its triangles. Where the output rounds the tip off, its triangles there are judged as any
@@ -133,20 +118,6 @@ std::vector<double> traced_tips(const TriangleMesh& mesh, const std::vector<Narr
         tip[v] = near[v];
     }
   return tip;
-}
-
-// Drops the vertices no triangle uses (repair_mesh), and renumbers the rest in `r`'s vertices
-// added and feature edges, and in `flags` (per vertex).
-void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
-  std::vector<Index> new_id;
-  repair_mesh(r.mesh, &new_id);
-  std::erase_if(r.vertices_added, [&](Index v) { return new_id[v] == kRemovedVertex; });
-  for (Index& v : r.vertices_added) v = new_id[v];
-  r.feature_edges = edges_after_repair(r.feature_edges, new_id);
-  std::vector<bool> kept(r.mesh.vertices.size(), false);
-  for (std::size_t v = 0; v < new_id.size(); ++v)
-    if (new_id[v] != kRemovedVertex) kept[new_id[v]] = flags[v];
-  flags = std::move(kept);
 }
 
 }  // namespace

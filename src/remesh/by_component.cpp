@@ -427,6 +427,7 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.input_crossing_triangles += part.input_crossing_triangles;
   all.output_crossing_triangles += part.output_crossing_triangles;
   all.vertices_guarded += part.vertices_guarded;
+  all.vertices_splitting_crossings += part.vertices_splitting_crossings;
   all.flat_ears_removed += part.flat_ears_removed;
   all.flat_pairs_merged += part.flat_pairs_merged;
   all.valence_three_removed += part.valence_three_removed;

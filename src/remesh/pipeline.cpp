@@ -21,6 +21,7 @@
 #include "features/renumber_features.hpp"
 #include "finish/crossing_guard.hpp"
 #include "finish/finish_output.hpp"
+#include "finish/split_crossings.hpp"
 #include "geometry/even_spacing.hpp"
 #include "geometry/self_crossings.hpp"
 #include "geometry/spread_samples.hpp"
@@ -52,6 +53,9 @@ constexpr int kCurveLloydSteps = 30;
 // a crossing triangle's longest edge of its centroid (finish/crossing_guard).
 constexpr int kGuardAttempts = 3;
 constexpr double kGuardReach = 1.5;
+// Rounds of halving at crossings left after that (finish/split_crossings): each halves the
+// chords that sag through a thin wall; couplingdown.off at 100 vertices needed four.
+constexpr int kSplitRounds = 8;
 
 // `count` seeds spread about the target lengths apart (paper §4.1 draws them ∝ √ρ at random).
 std::vector<Vec3> seeds_by_size(const TriangleMesh& mesh, std::size_t count, std::uint64_t seed,
@@ -355,6 +359,10 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
                       *projector, narrow, settings, guarded);
       },
       kGuardAttempts, kGuardReach);
+  // Where crossings are left, beside walls thinner than the spacing: the edges there halved.
+  if (result.output_crossing_triangles > 0)
+    result.vertices_splitting_crossings =
+        split_crossings(result, *projector, input_crossings, kSplitRounds);
   // Input triangles that cross another, where a search needed them (0 otherwise): where sheets
   // cross, no seed tells them apart.
   result.input_crossing_triangles = input_crossings.count();

@@ -50,6 +50,7 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
   j["input_crossing_triangles"] = r.input_crossing_triangles;
   j["output_crossing_triangles"] = r.output_crossing_triangles;
   j["vertices_guarded"] = r.vertices_guarded;
+  j["vertices_splitting_crossings"] = r.vertices_splitting_crossings;
   j["triangles_closing_holes"] = r.triangles_closing_holes;
   j["vertices_closing_holes"] = r.vertices_closing_holes;
   j["flat_ears_removed"] = r.flat_ears_removed;
@@ -181,6 +182,11 @@ MeshReport remesh_report(const std::string& name, const TriangleMesh& input, con
         "triangles that pass through others; {} output triangles still do where the input does "
         "not\n",
         r.vertices_guarded, r.output_crossing_triangles);
+  if (r.vertices_splitting_crossings > 0)
+    text += fmt::format(
+        "  crossings {} vertices added where edges were halved so that triangles no longer pass "
+        "through others\n",
+        r.vertices_splitting_crossings);
   return report;
 }
 
