@@ -23,7 +23,7 @@ class SurfaceProjector;
 // edge of two triangles, used in opposite directions, that is no feature edge of
 // `result.feature_edges`, where the line through its middle along the two triangles' mean normal
 // meets a sheet of `surface` facing their way within half the edge's length: that point becomes
-// the new vertex, and the two triangles four. The rounds stop once none crosses, or after two
+// the new vertex, and the two triangles four. The rounds stop once none crosses, or after three
 // rounds without fewer. The round with the fewest, swept around its new vertices (improve_shapes,
 // guarded; kept where that leaves no more crossing), replaces the output where it has fewer than
 // the output had: then `result.output_crossing_triangles` is updated and the vertices added
