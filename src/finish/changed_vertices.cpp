@@ -18,6 +18,19 @@ std::vector<bool> around_new_vertices(const TriangleMesh& mesh, std::size_t firs
   return near;
 }
 
+Index halve_edge(TriangleMesh& mesh, std::size_t t, std::size_t u, Index a, Index b, Index c,
+                 Index d, const Vec3& point) {
+  const auto m = static_cast<Index>(mesh.vertices.size());
+  mesh.vertices.push_back(point);
+  mesh.triangles[t] = {c, a, m};
+  mesh.triangles.push_back({c, m, b});
+  if (d != kNoIndex) {
+    mesh.triangles[u] = {b, m, d};
+    mesh.triangles.push_back({m, a, d});
+  }
+  return m;
+}
+
 void drop_unused_vertices(RemeshResult& r, std::vector<bool>& flags) {
   std::vector<Index> new_id;
   repair_mesh(r.mesh, &new_id);

@@ -72,12 +72,7 @@ std::size_t halve_crossing_edges(TriangleMesh& mesh, const std::vector<Triangle>
     const std::optional<double> along =
         surface.along(middle, normal, 0.5 * distance(pa, pb), normal);
     if (!along) continue;
-    const auto m = static_cast<Index>(mesh.vertices.size());
-    mesh.vertices.push_back(middle + *along * normal);
-    mesh.triangles[t] = {c, a, m};
-    mesh.triangles.push_back({c, m, b});
-    mesh.triangles[u] = {b, m, d};
-    mesh.triangles.push_back({m, a, d});
+    halve_edge(mesh, t, u, a, b, c, d, middle + *along * normal);
     split[t] = split[u] = true;
     ++halved;
   }

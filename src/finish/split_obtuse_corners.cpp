@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "features/edge_uses.hpp"
+#include "finish/changed_vertices.hpp"
 #include "finish/worst_shape.hpp"
 #include "geometry/angle.hpp"
 #include "geometry/surface_projector.hpp"
@@ -115,14 +116,7 @@ std::size_t split_obtuse_corners(TriangleMesh& mesh, const std::vector<Edge>& fe
         curve ? along->curves.nearest(*curve, middle).point : surface.nearest(middle).point;
     const double length = distance(mesh.vertices[a], mesh.vertices[b]);
     if (distance(foot, middle) > kMostOffset * length) continue;
-    const auto m = static_cast<Index>(mesh.vertices.size());
-    mesh.vertices.push_back(foot);
-    mesh.triangles[t] = {c, a, m};
-    mesh.triangles.push_back({c, m, b});
-    if (d != kNoIndex) {
-      mesh.triangles[u] = {b, m, d};
-      mesh.triangles.push_back({m, a, d});
-    }
+    const Index m = halve_edge(mesh, t, u, a, b, c, d, foot);
     split[t] = split[u] = true;
     if (along) {
       std::vector<VertexSupport>& supports = along->supports;
