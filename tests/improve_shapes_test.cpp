@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
 
+#include "cvtmesh/io.hpp"
 #include "cvtmesh/quality.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
@@ -351,6 +353,52 @@ TEST(ImproveShapes, ACreaseVertexGoesOntoItsCurveOnlyWhereAMoveMay) {
   EXPECT_GT(done.searches, 0u);
   EXPECT_EQ(guarded.vertices[v], start);
   EXPECT_EQ(std::ranges::count(self_crossing_triangles(guarded), true), 0);
+}
+
+// Two triangles of one vertex's star that share only that vertex can pass through each other
+// with neither turned far, where the star bends sharply (beside a one-triangle hole of a fuzzed
+// handle.off at 300 vertices, the guarded sweeps left two crossing so; every check looked only at
+// triangles outside the star). The 15 output vertices there, all guarded (3 held), swept over the
+// input's 298 triangles there: some move, and nothing crosses.
+TEST(ImproveShapes, AGuardedVertexNeverFoldsItsOwnStar) {
+  TriangleMesh mesh{{{-4.7026841333723031, -40.215729399936087, -10.809443601793101},
+                     {-4.7110637738322119, -40.186683309346485, -10.767978275866101},
+                     {-4.7233752000816285, -40.144864585133234, -10.816463912534882},
+                     {-4.7233049829742999, -40.207002640803452, -10.843030102193927},
+                     {-4.7306562501311165, -40.166515365323662, -10.880507939108776},
+                     {-4.6938127766292848, -40.189700940161487, -10.736898028194195},
+                     {-4.7126067901523934, -40.133690186634254, -10.716200347420607},
+                     {-4.7041787145137484, -40.139018708545933, -10.66590905937742},
+                     {-4.7074135817526672, -40.073545224537241, -10.67190373294704},
+                     {-4.6972247313612119, -40.08671454290559, -10.603022898071339},
+                     {-4.7037582930927293, -40.064969408497184, -10.63605630542558},
+                     {-4.723499329482082, -40.009378157199798, -10.945443467041137},
+                     {-4.7119035067188504, -39.952224419788678, -10.888651624187856},
+                     {-4.702535496813768, -39.980322560806961, -10.679393889431136},
+                     {-4.6775961041506706, -40.142121407569732, -10.604286090594863}},
+                    {{0, 1, 2},
+                     {3, 0, 2},
+                     {4, 3, 2},
+                     {1, 5, 2},
+                     {6, 7, 8},
+                     {2, 5, 8},
+                     {6, 8, 5},
+                     {8, 9, 10},
+                     {11, 2, 12},
+                     {2, 8, 13},
+                     {12, 2, 13},
+                     {8, 14, 9},
+                     {8, 7, 14},
+                     {4, 2, 11},
+                     {8, 10, 13}}};
+  const SurfaceProjector surface(
+      read_mesh(std::string(CVTMESH_TEST_DATA) + "/star_fold_surface.off"));
+  std::vector<VertexSupport> support(mesh.vertices.size(), {VertexSupport::Kind::surface, 0, true});
+  for (const Index held : {0, 5, 14}) support[held].kind = VertexSupport::Kind::fixed;
+  ASSERT_EQ(std::ranges::count(self_crossing_triangles(mesh), true), 0);
+  const ShapeImprovement done = improve(mesh, surface, nullptr, support, {}, 5);
+  EXPECT_GT(done.moves, 0u);
+  EXPECT_EQ(std::ranges::count(self_crossing_triangles(mesh), true), 0);
 }
 
 // A flat tetrahedron (x just above the middle of base c-d-y, nearer y) with a fin on edge c-d,
