@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "cvtmesh/topology.hpp"
 #include "geometry/self_crossings.hpp"
@@ -45,8 +46,9 @@ bool as_extracted(const std::vector<Triangle>& triangles, const TriangleMesh& fi
 
 }  // namespace
 
-void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
-                      const FinishSteps& finish, int attempts, double reach) {
+std::optional<RemeshResult> finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
+                                             const FinishSteps& finish, int attempts,
+                                             double reach) {
   const RemeshResult unfinished = result;
   finish(result, {});
   std::vector<Triangle> crossing = crossings_of_its_own(result.mesh, input_crossings);
@@ -61,28 +63,43 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
   // guarded, 30 s and 31 s not).
   // (The finishing steps keep the topology: the extraction's is the output's.)
   if (crossing.empty() || !keeps_topology(analyze_topology(unfinished.mesh), result.input_topology))
-    return;
+    return std::nullopt;
   std::vector<Triangle> own = std::move(crossing);  // the output's crossings of its own
   const std::unique_ptr<SurfaceProjector> before = crossing_surface(
       unfinished.mesh.vertices, crossings_of_its_own(unfinished.mesh, input_crossings));
   std::set<Vec3> guarded;
+  std::optional<RemeshResult> unguarded;  // the first output, once a guarded one replaces it
+  // Where crossings are left, the first output too, for what comes after (see the header).
+  const auto left_to_mend = [&] {
+    return result.output_crossing_triangles > 0 ? std::move(unguarded) : std::nullopt;
+  };
   // The steps run again with the vertices near the crossings `counted` picks of the output's own
   // guarded, within `reach` times the attempt's number, while each run leaves fewer of those and
   // no more of its own in all (camel.off at 5k, its input crossing itself: guarded, fewer made
-  // but 29 of its own where there were 25, and the Hausdorff max 0.507% -> 0.571%). With
-  // `reach_past_guarded`, an attempt whose guard adds no vertex (the same run as the output kept)
-  // is passed over for the next, wider one. Returns the crossings it picks that are left.
-  const auto guard_around = [&](const auto& counted, bool reach_past_guarded) {
+  // but 29 of its own where there were 25, and the Hausdorff max 0.507% -> 0.571%). With `widen`,
+  // an attempt that does not help is passed over for the next, wider one: a guard too narrow may
+  // leave the sweeps a fold just outside it (a fuzzed dino.off at 300: 7 vertices guarded left 4
+  // crossing triangles, 11 none); else the attempts stop there. An attempt whose guard adds no
+  // vertex to the last run's (the same run again) is passed over. Returns the crossings it picks
+  // that are left.
+  const auto guard_around = [&](const auto& counted, bool widen) {
     std::vector<Triangle> targets = counted(own, result.mesh);
+    // The size of the last run's guard, which grows with the reach until a run is kept.
+    std::size_t last_run = guarded.size();
     for (int attempt = 1; attempt <= attempts && !targets.empty(); ++attempt) {
       std::set<Vec3> more = guarded;
       more.merge(points_near_crossings(unfinished.mesh, result.mesh, targets, reach * attempt));
-      if (reach_past_guarded && more.size() == guarded.size()) continue;
+      if (more.size() == last_run) continue;
+      last_run = more.size();
       RemeshResult again = unfinished;
       finish(again, more);
       std::vector<Triangle> all = crossings_of_its_own(again.mesh, input_crossings);
       std::vector<Triangle> left = counted(all, again.mesh);
-      if (left.size() >= targets.size() || all.size() > own.size()) break;
+      if (left.size() >= targets.size() || all.size() > own.size()) {
+        if (widen) continue;
+        break;
+      }
+      if (!unguarded) unguarded = std::move(result);
       result = std::move(again);
       guarded = std::move(more);
       result.vertices_guarded = guarded.size();
@@ -92,12 +109,13 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
     }
     return targets;
   };
-  // First those the steps made, away from the extraction's own crossings.
+  // First those the steps made, away from the extraction's own crossings: a guard wide enough
+  // checks every step that made them.
   const std::vector<Triangle> made = guard_around(
       [&](std::vector<Triangle> all, const TriangleMesh& mesh) {
         return crossings_made(std::move(all), mesh, before.get());
       },
-      false);
+      true);
   // Then all of the output's own crossings that are left, those at the extraction's own too: the
   // steps before the sweeps may mend those, for the sweeps to cross there again (a fuzzed
   // ChineseDragon-10kv.off, a soup with a tenth of its triangles turned, adaptive at 300: 3
@@ -105,9 +123,14 @@ void finish_uncrossed(RemeshResult& result, InputCrossings& input_crossings,
   // extraction's own crossings stay whatever the steps do, the sweeps keep their room there.
   // Not where none is left there (all were tried above), nor where each is a triangle of the
   // extraction that the steps left as it was: no guard changes those (a fuzzed
-  // ChineseDragon-10kv with noise and dropouts at 300: its run again gave the same output).
-  if (made.size() == own.size() || as_extracted(own, result.mesh, unfinished.mesh)) return;
-  guard_around([](std::vector<Triangle> all, const TriangleMesh&) { return all; }, true);
+  // ChineseDragon-10kv with noise and dropouts at 300: its run again gave the same output). No
+  // wider attempt after one that does not help: where the extraction's own crossings stay, wider
+  // guards seldom do better, and each costs a run of the steps (a fuzzed bull.off, adaptive at
+  // 300: three attempts, 70 to 98 vertices guarded, each left the same 6).
+  if (made.size() == own.size() || as_extracted(own, result.mesh, unfinished.mesh))
+    return left_to_mend();
+  guard_around([](std::vector<Triangle> all, const TriangleMesh&) { return all; }, false);
+  return left_to_mend();
 }
 
 std::set<Vec3> points_near_crossings(const TriangleMesh& unfinished, const TriangleMesh& finished,

@@ -352,17 +352,25 @@ UnitRemesh remesh_unit(const TriangleMesh& input, const RemeshSettings& settings
   // Where the finishing steps made the output pass through itself, they are run again with the
   // changes around the crossings checked (finish/crossing_guard).
   const std::vector<NarrowAngle> narrow = narrow_feature_angles(mesh, features, kNarrowAngleDeg);
-  finish_uncrossed(
+  std::optional<RemeshResult> unguarded = finish_uncrossed(
       result, input_crossings,
       [&](RemeshResult& r, const std::set<Vec3>& guarded) {
         finish_output(r, seeds, optimized_seeds, cells, constraints, features, *curves, mesh,
                       *projector, narrow, settings, guarded);
       },
       kGuardAttempts, kGuardReach);
-  // Where crossings are left, beside walls thinner than the spacing: the edges there halved.
+  // Where crossings are left, beside walls thinner than the spacing: the edges there halved, on
+  // the guarded output and, where crossings are still left, on the unguarded one; the one with
+  // fewer crossings is kept.
   if (result.output_crossing_triangles > 0)
     result.vertices_splitting_crossings =
         split_crossings(result, *projector, input_crossings, kSplitRounds);
+  if (unguarded && result.output_crossing_triangles > 0) {
+    unguarded->vertices_splitting_crossings =
+        split_crossings(*unguarded, *projector, input_crossings, kSplitRounds);
+    if (unguarded->output_crossing_triangles < result.output_crossing_triangles)
+      result = std::move(*unguarded);
+  }
   // Input triangles that cross another, where a search needed them (0 otherwise): where sheets
   // cross, no seed tells them apart.
   result.input_crossing_triangles = input_crossings.count();
