@@ -118,10 +118,8 @@ TEST(CrossingGuard, AGuardTooNarrowIsWidenedWhereTheFoldMovesPastIt) {
   const Index centre = vertex_at(input, {1, 1, 0}), beyond = vertex_at(input, {1.75, 1, 0});
   ASSERT_LT(std::max(centre, beyond), input.vertices.size());
   const TriangleMesh centre_fold = folded(input, centre), beyond_fold = folded(input, beyond);
-  const std::vector<bool> crossing = self_crossing_triangles(centre_fold);
-  std::vector<Triangle> targets;
-  for (std::size_t t = 0; t < crossing.size(); ++t)
-    if (crossing[t]) targets.push_back(centre_fold.triangles[t]);
+  InputCrossings none(input);
+  const std::vector<Triangle> targets = crossings_of_its_own(centre_fold, none);
   const std::size_t first_guard = points_near_crossings(input, centre_fold, targets, 1.5).size();
   ASSERT_GT(points_near_crossings(input, centre_fold, targets, 3.0).size(), first_guard);
   // The moved vertex lies past the first attempt's reach.
