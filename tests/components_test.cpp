@@ -8,10 +8,12 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "cvtmesh/errors.hpp"
 #include "cvtmesh/remesh.hpp"
 #include "cvtmesh/topology.hpp"
+#include "geometry/self_crossings.hpp"
 #include "support/shapes.hpp"
 
 namespace cvtmesh {
@@ -54,6 +56,38 @@ TEST(Components, DisksWhoseRimsNearlyTouchStayApartWithCountsByArea) {
       std::count_if(r.mesh.vertices.begin(), r.mesh.vertices.end(), on_small_disk));
   EXPECT_EQ(r.mesh.vertices.size(), 800u);
   EXPECT_EQ(small, 160u);
+}
+
+// A hollow ball: the unit sphere and, inside it and facing inwards, a sphere of radius 0.99.
+TriangleMesh hollow_ball() {
+  TriangleMesh inner = transformed(icosphere(4), 0.99);
+  for (Triangle& t : inner.triangles) std::swap(t[1], t[2]);
+  return concatenate(icosphere(4), inner);
+}
+
+// Its wall, 0.01 thick, against the chords' sag (h²/8 for edges h on the unit sphere): at 300
+// vertices (h about 0.3, a sag of 0.012) the outer sphere's triangles pass through the inner one,
+// which neither sphere's own remesh sees; the report counts them (it said none, each part having
+// counted its own). At 2,000 (a sag of 0.001) none do.
+TEST(Components, SpheresAWallApartCrossOnlyWhereTheChordsSagThroughTheWallAndTheReportSaysSo) {
+  const TriangleMesh m = hollow_ball();
+  for (const std::size_t count : {300u, 2000u}) {
+    SCOPED_TRACE(count);
+    RemeshSettings s;
+    s.vertices = count;
+    const RemeshResult r = remesh(m, s);
+    const TopologyReport t = analyze_topology(r.mesh);
+    EXPECT_TRUE(same_topology(t, analyze_topology(m)));  // two spheres, Euler characteristic 4
+    EXPECT_TRUE(t.is_manifold());
+    EXPECT_TRUE(t.consistently_oriented);
+    const std::vector<bool> crossing = self_crossing_triangles(r.mesh);
+    EXPECT_EQ(r.output_crossing_triangles,
+              static_cast<std::size_t>(std::count(crossing.begin(), crossing.end(), true)));
+    EXPECT_EQ(r.input_crossing_triangles, 0u);
+    if (count == 2000) {
+      EXPECT_EQ(r.output_crossing_triangles, 0u);
+    }
+  }
 }
 
 // A flat star of 8 points, 0.2 across: a fan whose rim turns sharply at each of its 16

@@ -20,6 +20,7 @@
 #include "features/feature_seeds.hpp"
 #include "features/renumber_features.hpp"
 #include "geometry/even_spacing.hpp"
+#include "geometry/self_crossings.hpp"
 #include "geometry/surface_projector.hpp"
 #include "geometry/triangle_sides.hpp"
 #include "geometry/union_find.hpp"
@@ -435,6 +436,17 @@ void append(RemeshResult& all, RemeshResult part, const Component& component,
   all.time_limit_reached |= part.time_limit_reached;
 }
 
+// The triangles of `output`, the parts' outputs put together, that cross another away from where
+// `input` crosses itself (crossings_of_its_own); `input_crossing`, the parts' sum, becomes the
+// whole input's count where the input was searched (its parts may cross one another).
+std::size_t whole_crossings(const TriangleMesh& output, const TriangleMesh& input,
+                            std::size_t& input_crossing) {
+  InputCrossings crossings(input);
+  const std::size_t own = crossings_of_its_own(output, crossings).size();
+  if (crossings.found() || own > 0) input_crossing = crossings.count();
+  return own;
+}
+
 // The output vertices at the positions of component c's pinches, as (input vertex, output vertex)
 // pairs; the output's vertices start at `offset` in the whole's.
 void find_pinches(const Component& part, const TriangleMesh& output, Index offset,
@@ -689,6 +701,10 @@ std::optional<RemeshResult> remesh_parts(const TriangleMesh& input, const Remesh
     pinches.insert(pinches.end(), zipped->begin(), zipped->end());
   }
   weld_pinches(all, std::move(pinches));
+  // Each part counted the crossings of its own output only; parts that lie closer than their
+  // chords sag (a hollow ball's two spheres a wall apart thinner than that) pass through one
+  // another where no part looks: the whole output is searched, and its count is the report's.
+  all.output_crossing_triangles = whole_crossings(all.mesh, mesh, all.input_crossing_triangles);
   in_wall_time(all, parts_seconds);
   all.gradient_norm_initial = std::sqrt(gradient2_initial);
   all.gradient_norm_final = std::sqrt(gradient2_final);
