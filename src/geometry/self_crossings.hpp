@@ -35,7 +35,9 @@ class InputCrossings {
   // The crossing triangles as a surface (crossing_surface), searched on the first call; null
   // where there are none.
   const SurfaceProjector* get();
-  // Whether a search found any; how many triangles cross another (0 before a search).
+  // Whether get() has searched; whether the search found any; how many triangles cross another
+  // (0 before a search).
+  bool searched() const { return searched_; }
   bool found() const { return found_ != nullptr; }
   std::size_t count() const { return count_; }
 

@@ -443,7 +443,7 @@ std::size_t whole_crossings(const TriangleMesh& output, const TriangleMesh& inpu
                             std::size_t& input_crossing) {
   InputCrossings crossings(input);
   const std::size_t own = crossings_of_its_own(output, crossings).size();
-  if (crossings.found() || own > 0) input_crossing = crossings.count();
+  if (crossings.searched()) input_crossing = crossings.count();
   return own;
 }
 
